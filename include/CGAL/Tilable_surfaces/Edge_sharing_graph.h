@@ -1,0 +1,250 @@
+// Copyright (c) 2026 Tilable_surfaces contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TILABLE_SURFACES_EDGE_SHARING_GRAPH_H
+#define CGAL_TILABLE_SURFACES_EDGE_SHARING_GRAPH_H
+
+/// \file Edge_sharing_graph.h
+/// The edge-sharing graph of a clustering (paper §3, method notes §3): its
+/// connected components are the distinct edge lengths of the tiled surface,
+/// their number the degree of flexibility.
+
+#include <CGAL/Tilable_surfaces/exceptions.h>
+#include <CGAL/Tilable_surfaces/named_parameters.h>
+#include <CGAL/Tilable_surfaces/quad_shape.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <boost/graph/graph_traits.hpp>
+#include <boost/pending/disjoint_sets.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <array>
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Tilable_surfaces {
+
+/// \ingroup PkgTilableSurfacesRef
+/// The edge-sharing graph of a clustering of the faces of a quad mesh.
+///
+/// Its nodes are the 4K S-quad edges (c, k): edge k of cluster c's template
+/// joins corners t_k and t_{k+1}. Every interior mesh edge, shared by faces f
+/// and g, links the node of f's template edge that maps onto it with that of
+/// g's; links from a node to itself are ignored and boundary edges link
+/// nothing. Each connected component must take a single length on the tiled
+/// surface; the number of components is the *degree of flexibility* (DOF).
+///
+/// The components are kept in a union-find structure, so merging two clusters
+/// amends the graph in O(1) amortized unions instead of rebuilding it.
+///
+/// \tparam PolygonMesh a model of `FaceListGraph` whose faces are quads.
+template <typename PolygonMesh>
+class Edge_sharing_graph
+{
+  typedef boost::graph_traits<PolygonMesh> GT;
+
+public:
+  typedef typename GT::face_descriptor face_descriptor;
+  typedef typename GT::edge_descriptor edge_descriptor;
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+
+  /// Readable property map: the component (0..DOF-1) of every mesh edge, for
+  /// colouring edges as in the paper's Fig. 6.
+  class Edge_component_map
+  {
+  public:
+    typedef edge_descriptor key_type;
+    typedef std::size_t value_type;
+    typedef std::size_t reference;
+    typedef boost::readable_property_map_tag category;
+
+    Edge_component_map() : m_graph(nullptr) {}
+    explicit Edge_component_map(const Edge_sharing_graph* g) : m_graph(g) {}
+    friend std::size_t get(const Edge_component_map& m, edge_descriptor e)
+    { return m.m_graph->component(e); }
+
+  private:
+    const Edge_sharing_graph* m_graph;
+  };
+
+  /// Builds the graph of a clustering of `pm` into `number_of_clusters`
+  /// clusters, read from `face_cluster_map` (values 0..K-1) and
+  /// `face_orientation_map` (values 0..7, or `Quad_orientation`).
+  ///
+  /// \cgalNamedParamsBegin
+    ///   \cgalParamNBegin{face_index_map} indices of the faces, for messages \cgalParamNEnd
+  /// \cgalNamedParamsEnd
+  /// Mesh edges are identified by the mesh's internal edge index
+  /// (`CGAL::get_initialized_edge_index_map(pm)`); `pm` must not change
+  /// while the graph is used.
+  /// \throws Invalid_input if a face is not a quad, or has a cluster out of
+  /// 0..K-1 or an orientation out of 0..7.
+  template <typename FaceClusterMap, typename FaceOrientationMap,
+            typename CGAL_NP_TEMPLATE_PARAMETERS>
+  Edge_sharing_graph(const PolygonMesh& pm, std::size_t number_of_clusters,
+                     FaceClusterMap face_cluster_map, FaceOrientationMap face_orientation_map,
+                     const CGAL_NP_CLASS& np = parameters::default_values())
+    : m_edge_index_map(CGAL::get_initialized_edge_index_map(pm))
+  {
+    const auto fim = CGAL::get_initialized_face_index_map(pm, np);
+    m_edge_node.assign(num_edges(pm), no_node());
+    reset(number_of_clusters);
+
+    for(face_descriptor f : faces(pm))
+    {
+      const std::size_t fi = get(fim, f);
+      const long long c = static_cast<long long>(get(face_cluster_map, f));
+      const int o = static_cast<int>(get(face_orientation_map, f));
+      if(c < 0 || std::size_t(c) >= number_of_clusters)
+        throw Invalid_input("face " + std::to_string(fi) + " has cluster " + std::to_string(c) +
+                            ", not in 0.." + std::to_string(number_of_clusters - 1),
+                            Invalid_input::FACE, fi);
+      if(o < 0 || o > 7)
+        throw Invalid_input("face " + std::to_string(fi) + " has orientation " +
+                            std::to_string(o) + ", not in 0..7", Invalid_input::FACE, fi);
+      if(CGAL::halfedges_around_face(halfedge(f, pm), pm).size() != 4)
+        throw Invalid_input("face " + std::to_string(fi) + " is not a quad",
+                            Invalid_input::FACE, fi);
+
+      const Quad_orientation orientation(o);
+      // Face edge j (from v_j to v_{j+1}) is next^{j+1}(halfedge(f)), since
+      // the face's vertex list starts at the target of halfedge(f).
+      halfedge_descriptor h = halfedge(f, pm);
+      for(int j = 0; j < 4; ++j)
+      {
+        h = next(h, pm);
+        const std::size_t node = 4 * std::size_t(c) + orientation.template_edge(j);
+        std::size_t& edge_node = m_edge_node[get(m_edge_index_map, edge(h, pm))];
+        if(edge_node == no_node())
+          edge_node = node;
+        else
+          link(edge_node, node);
+      }
+    }
+  }
+
+  /// The number of clusters K the graph was built for (merged clusters
+  /// included: their ids stay reserved).
+  std::size_t number_of_clusters() const { return m_alive.size(); }
+
+  /// Whether cluster `c` still exists (it was not merged into another one).
+  bool is_alive(std::size_t c) const { return m_alive.at(c); }
+
+  /// The degree of flexibility: the number of components among the S-quad
+  /// edges of the clusters that are alive.
+  std::size_t degree_of_flexibility() const { return m_number_of_components; }
+
+  /// The component (0..DOF-1) of edge `k` (0..3) of cluster `c`'s template.
+  /// Component ids are numbered by first appearance over (c, k) in
+  /// lexicographic order, so they are deterministic.
+  std::size_t component(std::size_t c, int k) const
+  {
+    if(c >= m_alive.size() || !m_alive[c] || k < 0 || k > 3)
+      throw Invalid_input("no S-quad edge (" + std::to_string(c) + ", " + std::to_string(k) +
+                          ") in the edge-sharing graph", Invalid_input::PARAMETER);
+    update_component_ids();
+    return m_component_id[find(4 * c + k)];
+  }
+
+  /// The component of mesh edge `e`.
+  std::size_t component(edge_descriptor e) const
+  {
+    const std::size_t node = m_edge_node.at(get(m_edge_index_map, e));
+    update_component_ids();
+    return m_component_id[find(node)];
+  }
+
+  /// The 4 components of cluster `c`'s template edges: its *pattern*.
+  std::array<std::size_t, 4> cluster_pattern(std::size_t c) const
+  {
+    return {{component(c, 0), component(c, 1), component(c, 2), component(c, 3)}};
+  }
+
+  /// A property map with the component of every mesh edge. It reads this
+  /// graph, so it must not outlive it.
+  Edge_component_map edge_component_map() const { return Edge_component_map(this); }
+
+  /// Amends the graph after cluster `removed` was merged into cluster `kept`:
+  /// template corner `j` of `kept` corresponds to corner `correspondence(j)`
+  /// of `removed` (so the faces of `removed` get orientation
+  /// `o * correspondence` in `kept`'s labelling; updating the maps is the
+  /// caller's job). Returns the new degree of flexibility, which can only
+  /// decrease.
+  std::size_t merge_clusters(std::size_t kept, std::size_t removed,
+                             Quad_orientation correspondence)
+  {
+    if(kept == removed || kept >= m_alive.size() || removed >= m_alive.size() ||
+       !m_alive[kept] || !m_alive[removed])
+      throw Invalid_input("cannot merge cluster " + std::to_string(removed) + " into cluster " +
+                          std::to_string(kept), Invalid_input::PARAMETER);
+    for(int k = 0; k < 4; ++k)
+      link(4 * kept + k, 4 * removed + correspondence.face_edge(k));
+    m_alive[removed] = false;
+    m_ids_valid = false;
+    return m_number_of_components;
+  }
+
+private:
+  static std::size_t no_node() { return (std::numeric_limits<std::size_t>::max)(); }
+
+  void reset(std::size_t number_of_clusters)
+  {
+    const std::size_t n = 4 * number_of_clusters;
+    m_alive.assign(number_of_clusters, true);
+    m_sets = Disjoint_sets(n);
+    for(std::size_t i = 0; i < n; ++i)
+      m_sets.make_set(i);
+    m_number_of_components = n;
+    m_ids_valid = false;
+  }
+
+  void link(std::size_t a, std::size_t b)
+  {
+    const std::size_t ra = find(a), rb = find(b);
+    if(ra == rb)
+      return;
+    m_sets.link(ra, rb);
+    --m_number_of_components;
+    m_ids_valid = false;
+  }
+
+  std::size_t find(std::size_t node) const { return m_sets.find_set(node); }
+
+  void update_component_ids() const
+  {
+    if(m_ids_valid)
+      return;
+    m_component_id.assign(4 * m_alive.size(), no_node());
+    std::size_t next_id = 0;
+    for(std::size_t node = 0; node < 4 * m_alive.size(); ++node)
+    {
+      if(!m_alive[node / 4])
+        continue;
+      std::size_t& id = m_component_id[find(node)];
+      if(id == no_node())
+        id = next_id++;
+    }
+    m_ids_valid = true;
+  }
+
+  typedef boost::disjoint_sets_with_storage<> Disjoint_sets;
+  typedef typename CGAL::GetInitializedEdgeIndexMap<PolygonMesh>::const_type Edge_index_map;
+
+  Edge_index_map m_edge_index_map;
+  std::vector<std::size_t> m_edge_node;  // one S-quad edge node per mesh edge
+  std::vector<bool> m_alive;
+  mutable Disjoint_sets m_sets{0};       // find_set() compresses paths
+  std::size_t m_number_of_components = 0;
+  mutable std::vector<std::size_t> m_component_id;
+  mutable bool m_ids_valid = false;
+};
+
+} // namespace Tilable_surfaces
+} // namespace CGAL
+
+#endif // CGAL_TILABLE_SURFACES_EDGE_SHARING_GRAPH_H

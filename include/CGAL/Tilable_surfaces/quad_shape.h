@@ -1,0 +1,386 @@
+// Copyright (c) 2026 Tilable_surfaces contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TILABLE_SURFACES_QUAD_SHAPE_H
+#define CGAL_TILABLE_SURFACES_QUAD_SHAPE_H
+
+/// \file quad_shape.h
+/// Shape analysis of quads: orientations (vertex correspondences), edge and
+/// diagonal lengths, signed volume, a rotation-invariant descriptor, the best
+/// proper rigid fit, the dissimilarity of the paper (§3) and the congruence
+/// error of instances against an S-quad (method notes §1).
+///
+/// All computations are done in double precision with Eigen, whatever the
+/// kernel of the mesh: the quantities are measurements, not predicates.
+
+#include <CGAL/Tilable_surfaces/exceptions.h>
+#include <CGAL/Tilable_surfaces/named_parameters.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/number_utils.h>
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <limits>
+#include <string>
+
+namespace CGAL {
+namespace Tilable_surfaces {
+
+/// \ingroup PkgTilableSurfacesRef
+/// Four corners t0, t1, t2, t3 of a quad, in double precision. Edge `k` joins
+/// corners `k` and `(k+1) mod 4`; the diagonals are t0t2 and t1t3.
+typedef std::array<Eigen::Vector3d, 4> Quad;
+
+/// \ingroup PkgTilableSurfacesRef
+/// One of the 8 correspondences between the corners of an S-quad and the
+/// vertices (v0, v1, v2, v3) of a face, in the face's order: template corner
+/// `i` goes to face vertex `(*this)(i)`, with
+/// `(i + o) mod 4` for `o < 4` (same direction) and `(o - i) mod 4` for
+/// `o >= 4` (reversed: the panel is turned over).
+class Quad_orientation
+{
+public:
+  /// The identity correspondence (o = 0).
+  Quad_orientation() : m_index(0) {}
+
+  /// The correspondence number `index`, in 0..7.
+  /// \throws Invalid_input if `index` is out of range.
+  explicit Quad_orientation(int index) : m_index(static_cast<unsigned char>(index))
+  {
+    if(index < 0 || index > 7)
+      throw Invalid_input("quad orientation " + std::to_string(index) + " is not in 0..7",
+                          Invalid_input::PARAMETER);
+  }
+
+  /// The number o in 0..7 of the correspondence.
+  int index() const { return m_index; }
+
+  /// The number o, for property maps that store orientations as integers.
+  explicit operator int() const { return m_index; }
+
+  /// Whether the correspondence reverses the cyclic order (o >= 4).
+  bool is_reversed() const { return m_index >= 4; }
+
+  /// The face vertex (0..3) that template corner `i` (0..3) goes to.
+  int operator()(int i) const
+  {
+    return m_index < 4 ? (i + m_index) & 3 : (m_index - i) & 3;
+  }
+
+  /// The correspondence that undoes this one: `inverse()((*this)(i)) == i`.
+  Quad_orientation inverse() const
+  {
+    return m_index < 4 ? Quad_orientation((4 - m_index) & 3) : *this;
+  }
+
+  /// The composition `(a * b)(i) == a(b(i))`.
+  friend Quad_orientation operator*(const Quad_orientation& a, const Quad_orientation& b)
+  {
+    // Both maps are determined by the image of 0 and the direction.
+    const int image_of_zero = a(b(0));
+    const bool reversed = a.is_reversed() != b.is_reversed();
+    return Quad_orientation(reversed ? 4 + image_of_zero : image_of_zero);
+  }
+
+  /// The face edge (0..3, edge j joins v_j and v_{j+1}) that template edge
+  /// `k` (joining t_k and t_{k+1}) goes to.
+  int face_edge(int k) const
+  {
+    return m_index < 4 ? (k + m_index) & 3 : (m_index - k - 1) & 3;
+  }
+
+  /// The template edge that goes to face edge `j`; inverse of `face_edge()`.
+  int template_edge(int j) const
+  {
+    return m_index < 4 ? (j - m_index) & 3 : (m_index - j - 1) & 3;
+  }
+
+  friend bool operator==(const Quad_orientation& a, const Quad_orientation& b)
+  { return a.m_index == b.m_index; }
+  friend bool operator!=(const Quad_orientation& a, const Quad_orientation& b)
+  { return a.m_index != b.m_index; }
+
+private:
+  unsigned char m_index;
+};
+
+/// \ingroup PkgTilableSurfacesRef
+/// Which instances count as copies of one S-quad (method notes §5,
+/// "reflection policy").
+enum Orientation_policy
+{
+  /// All 8 correspondences, proper rigid motions only (the paper's setting).
+  PROPER_RIGID_MOTIONS = 0,
+  /// Only the 4 correspondences that keep the cyclic order: panels with a
+  /// finished face are never turned over.
+  NO_TURNED_OVER_PANELS,
+  /// All 8 correspondences and mirror images too (molds symmetric by a plane).
+  ALLOW_MIRRORED_PANELS
+};
+
+/// \ingroup PkgTilableSurfacesRef
+/// Returns the quad `r` with `r[i] = q[o(i)]`: the corners of `q` listed in the
+/// labelling of a template matched to `q` with orientation `o`.
+inline Quad reoriented(const Quad& q, Quad_orientation o)
+{
+  return Quad{{q[o(0)], q[o(1)], q[o(2)], q[o(3)]}};
+}
+
+/// \ingroup PkgTilableSurfacesRef
+/// Lengths of the edges t0t1, t1t2, t2t3, t3t0.
+inline std::array<double, 4> edge_lengths(const Quad& q)
+{
+  return {{(q[1] - q[0]).norm(), (q[2] - q[1]).norm(),
+           (q[3] - q[2]).norm(), (q[0] - q[3]).norm()}};
+}
+
+/// \ingroup PkgTilableSurfacesRef
+/// Lengths of the diagonals t0t2 and t1t3.
+inline std::array<double, 2> diagonal_lengths(const Quad& q)
+{
+  return {{(q[2] - q[0]).norm(), (q[3] - q[1]).norm()}};
+}
+
+/// \ingroup PkgTilableSurfacesRef
+/// Signed volume det[t1 - t0, t2 - t0, t3 - t0] / 6 of the tetrahedron of the
+/// four corners. It changes sign under a mirror, under reversal of the labels
+/// and under an odd cyclic shift; evaluate it in the template's labelling.
+inline double signed_volume(const Quad& q)
+{
+  return (q[1] - q[0]).dot((q[2] - q[0]).cross(q[3] - q[0])) / 6.0;
+}
+
+/// \ingroup PkgTilableSurfacesRef
+/// Distance of t3 to the plane through t0, t1, t2 (0 for a planar quad; the
+/// plane is the least-degenerate of the four corner triples).
+inline double planarity_defect(const Quad& q)
+{
+  // 6|V| = base area * 2 * height; use the largest of the 4 corner triangles
+  // as the base so that a nearly collinear triple does not blow up.
+  double best_twice_area = 0;
+  for(int i = 0; i < 4; ++i)
+    best_twice_area = (std::max)(best_twice_area,
+      (q[(i + 1) & 3] - q[i]).cross(q[(i + 2) & 3] - q[i]).norm());
+  if(best_twice_area == 0)
+    return 0;
+  return 6.0 * std::abs(signed_volume(q)) / best_twice_area;
+}
+
+/// \ingroup PkgTilableSurfacesRef
+/// A rotation-invariant and relabelling-invariant shape descriptor, all in
+/// length units: the 4 edge lengths sorted, the 2 diagonal lengths sorted and
+/// the cube root of 6|V|. Congruent quads have equal descriptors (mirror
+/// images too: the descriptor prefilters, the dissimilarity decides).
+typedef std::array<double, 7> Quad_descriptor;
+
+/// \ingroup PkgTilableSurfacesRef
+/// Computes the descriptor of `q`; see `Quad_descriptor`.
+inline Quad_descriptor shape_descriptor(const Quad& q)
+{
+  const std::array<double, 4> e = edge_lengths(q);
+  const std::array<double, 2> d = diagonal_lengths(q);
+  Quad_descriptor r{{e[0], e[1], e[2], e[3], d[0], d[1],
+                     std::cbrt(6.0 * std::abs(signed_volume(q)))}};
+  std::sort(r.begin(), r.begin() + 4);
+  std::sort(r.begin() + 4, r.begin() + 6);
+  return r;
+}
+
+/// \ingroup PkgTilableSurfacesRef
+/// A rigid motion `x -> rotation * x + translation`; `rotation` has
+/// determinant +1 unless `is_mirrored` (only with `ALLOW_MIRRORED_PANELS`).
+struct Rigid_fit
+{
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
+  Eigen::Vector3d translation = Eigen::Vector3d::Zero();
+  bool is_mirrored = false;
+
+  /// The image of `p`.
+  Eigen::Vector3d operator()(const Eigen::Vector3d& p) const { return rotation * p + translation; }
+  /// The image of every corner of `q`.
+  Quad operator()(const Quad& q) const
+  { return Quad{{(*this)(q[0]), (*this)(q[1]), (*this)(q[2]), (*this)(q[3])}}; }
+};
+
+/// \ingroup PkgTilableSurfacesRef
+/// The proper rigid motion T minimising sum_i |target[i] - T(source[i])|^2
+/// (Umeyama's closed form, never a mirror). With `allow_mirror`, the better of
+/// that motion and the best improper one.
+inline Rigid_fit best_rigid_fit(const Quad& source, const Quad& target, bool allow_mirror = false)
+{
+  Eigen::Matrix<double, 3, 4> src, dst;
+  for(int i = 0; i < 4; ++i) { src.col(i) = source[i]; dst.col(i) = target[i]; }
+  const Eigen::Matrix4d proper = Eigen::umeyama(src, dst, false);
+  Rigid_fit fit;
+  fit.rotation = proper.topLeftCorner<3, 3>();
+  fit.translation = proper.topRightCorner<3, 1>();
+  if(!allow_mirror)
+    return fit;
+
+  // An improper motion is a proper one applied after the mirror z -> -z.
+  Eigen::Matrix<double, 3, 4> mirrored = src;
+  mirrored.row(2) *= -1;
+  const Eigen::Matrix4d improper = Eigen::umeyama(mirrored, dst, false);
+  Rigid_fit mirror_fit;
+  mirror_fit.rotation = improper.topLeftCorner<3, 3>() * Eigen::Vector3d(1, 1, -1).asDiagonal();
+  mirror_fit.translation = improper.topRightCorner<3, 1>();
+  mirror_fit.is_mirrored = true;
+
+  auto squared_residual = [&](const Rigid_fit& f) {
+    double r = 0;
+    for(int i = 0; i < 4; ++i) r += (target[i] - f(source[i])).squaredNorm();
+    return r;
+  };
+  return squared_residual(mirror_fit) < squared_residual(fit) ? mirror_fit : fit;
+}
+
+/// \ingroup PkgTilableSurfacesRef
+/// max_i |target[i] - T(source[i])| for the best rigid fit T of `source`
+/// onto `target` (labels already in correspondence).
+inline double rigid_fit_deviation(const Quad& source, const Quad& target, bool allow_mirror = false)
+{
+  const Rigid_fit fit = best_rigid_fit(source, target, allow_mirror);
+  double worst = 0;
+  for(int i = 0; i < 4; ++i)
+    worst = (std::max)(worst, (target[i] - fit(source[i])).norm());
+  return worst;
+}
+
+/// \ingroup PkgTilableSurfacesRef
+/// The outcome of matching a template quad to a face: the dissimilarity
+/// s(p, q) of the paper, the correspondence that achieves it and the motion.
+struct Quad_match
+{
+  double dissimilarity = (std::numeric_limits<double>::max)();
+  Quad_orientation orientation;
+  Rigid_fit fit;
+};
+
+/// \ingroup PkgTilableSurfacesRef
+/// Matches template `p` (corners t_i) to quad `q` (vertices v_j in the face's
+/// order): the minimum over the correspondences allowed by `policy` of
+/// sum_i |v_{o(i)} - T(t_i)|, T the best rigid fit of `p` onto `q` relabelled
+/// by `o`. Symmetric in value: `best_match(q, p)` has the same dissimilarity,
+/// with the inverse orientation. Ties are broken by the smallest orientation
+/// index, so the result is deterministic.
+inline Quad_match best_match(const Quad& p, const Quad& q,
+                             Orientation_policy policy = PROPER_RIGID_MOTIONS)
+{
+  const bool allow_mirror = (policy == ALLOW_MIRRORED_PANELS);
+  const int number_of_orientations = (policy == NO_TURNED_OVER_PANELS) ? 4 : 8;
+  Quad_match best;
+  for(int o = 0; o < number_of_orientations; ++o)
+  {
+    const Quad_orientation orientation(o);
+    const Quad target = reoriented(q, orientation);
+    const Rigid_fit fit = best_rigid_fit(p, target, allow_mirror);
+    double sum = 0;
+    for(int i = 0; i < 4; ++i)
+      sum += (target[i] - fit(p[i])).norm();
+    if(sum < best.dissimilarity)
+    {
+      best.dissimilarity = sum;
+      best.orientation = orientation;
+      best.fit = fit;
+    }
+  }
+  return best;
+}
+
+/// \ingroup PkgTilableSurfacesRef
+/// The dissimilarity s(p, q) of the paper (§3); see `best_match()`.
+inline double dissimilarity(const Quad& p, const Quad& q,
+                            Orientation_policy policy = PROPER_RIGID_MOTIONS)
+{
+  return best_match(p, q, policy).dissimilarity;
+}
+
+/// \ingroup PkgTilableSurfacesRef
+/// The congruence error of a set of instances against an S-quad: the worst
+/// instance's largest corner deviation after its best rigid fit, divided by
+/// `length_scale` (method notes §1 use the mean edge length of the mesh).
+/// Each instance must already be in the template's labelling (see
+/// `reoriented()`). Returns 0 for an empty range.
+template <typename QuadRange>
+double congruence_error(const QuadRange& instances, const Quad& s_quad,
+                        double length_scale = 1.0, bool allow_mirror = false)
+{
+  double worst = 0;
+  for(const Quad& instance : instances)
+    worst = (std::max)(worst, rigid_fit_deviation(s_quad, instance, allow_mirror));
+  return worst / length_scale;
+}
+
+/// \ingroup PkgTilableSurfacesRef
+/// The corners of face `f` of `pm` in the labelling of a template matched
+/// with orientation `o`: corner `i` is the face's vertex `o(i)`, the face's
+/// vertices (v0, v1, v2, v3) being listed as
+/// `vertices_around_face(halfedge(f, pm), pm)` does (for a `Surface_mesh`, the
+/// order in which they were given to `add_face()` or in the file).
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{vertex_point_map} the property map with the points
+///     associated to the vertices of `pm` \cgalParamNEnd
+/// \cgalNamedParamsEnd
+/// \throws Invalid_input if `f` is not a quad.
+template <typename PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
+Quad face_quad(typename boost::graph_traits<PolygonMesh>::face_descriptor f,
+               const PolygonMesh& pm,
+               Quad_orientation o = Quad_orientation(),
+               const CGAL_NP_CLASS& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, pm));
+  Quad face_order;
+  int n = 0;
+  for(auto v : CGAL::vertices_around_face(halfedge(f, pm), pm))
+  {
+    if(n == 4) { n = 5; break; }
+    const auto& p = get(vpm, v);
+    face_order[n++] = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()),
+                                      CGAL::to_double(p.z()));
+  }
+  if(n != 4)
+    throw Invalid_input("a face that is not a quad was given where a quad is needed",
+                        Invalid_input::FACE);
+  return reoriented(face_order, o);
+}
+
+/// \ingroup PkgTilableSurfacesRef
+/// The mean length of the edges of `pm`, the length scale of the congruence
+/// error. Returns 0 for a mesh without edges.
+template <typename PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
+double mean_edge_length(const PolygonMesh& pm,
+                        const CGAL_NP_CLASS& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, pm));
+  double sum = 0;
+  std::size_t count = 0;
+  for(auto e : edges(pm))
+  {
+    const auto& a = get(vpm, source(e, pm));
+    const auto& b = get(vpm, target(e, pm));
+    sum += std::sqrt(CGAL::to_double(CGAL::squared_distance(a, b)));
+    ++count;
+  }
+  return count == 0 ? 0.0 : sum / double(count);
+}
+
+} // namespace Tilable_surfaces
+} // namespace CGAL
+
+#endif // CGAL_TILABLE_SURFACES_QUAD_SHAPE_H

@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# Installs the Debian packages the project needs (as root, non-interactive),
+# then configures and builds a Release build in build/. Idempotent: packages
+# already present are not reinstalled, and the build is incremental.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(g++ cmake make libcgal-dev libeigen3-dev libboost-dev libboost-program-options-dev
+          libgtest-dev nlohmann-json3-dev
+          # optional, used when present: parallel loops and the CHOLMOD sparse solver
+          libtbb-dev libsuitesparse-dev)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}"
+  SUDO=""; [ "$(id -u)" -ne 0 ] && SUDO="sudo"
+  $SUDO apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
+fi
+
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > build-configure.log 2>&1 \
+  || { cat build-configure.log; exit 1; }
+jobs=$(nproc 2>/dev/null || echo 2)
+cmake --build build -j "$jobs" "$@"

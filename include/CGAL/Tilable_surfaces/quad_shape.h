@@ -35,6 +35,15 @@
 namespace CGAL {
 namespace Tilable_surfaces {
 
+namespace internal {
+// Measurements are done in double whatever the kernel's number type.
+template <typename Point_3>
+Eigen::Vector3d to_eigen(const Point_3& p)
+{
+  return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+}
+} // namespace internal
+
 /// \ingroup PkgTilableSurfacesRef
 /// Four corners t0, t1, t2, t3 of a quad, in double precision. Edge `k` joins
 /// corners `k` and `(k+1) mod 4`; the diagonals are t0t2 and t1t3.
@@ -160,19 +169,24 @@ inline double signed_volume(const Quad& q)
 }
 
 /// \ingroup PkgTilableSurfacesRef
-/// Distance of t3 to the plane through t0, t1, t2 (0 for a planar quad; the
-/// plane is the least-degenerate of the four corner triples).
+/// Distance of t3 to the plane through t0, t1, t2: 0 for a planar quad. When
+/// t0, t1, t2 are (nearly) collinear, the largest of the four corner
+/// triangles is taken as the base instead, so the value stays meaningful.
 inline double planarity_defect(const Quad& q)
 {
-  // 6|V| = base area * 2 * height; use the largest of the 4 corner triangles
-  // as the base so that a nearly collinear triple does not blow up.
-  double best_twice_area = 0;
+  // 6|V| = (twice the base area) * height.
+  const double six_volume = 6.0 * std::abs(signed_volume(q));
+  const double base = (q[1] - q[0]).cross(q[2] - q[0]).norm();
+  double scale = 0;
   for(int i = 0; i < 4; ++i)
-    best_twice_area = (std::max)(best_twice_area,
+    scale = (std::max)(scale, (q[(i + 1) & 3] - q[i]).squaredNorm());
+  if(base > 1e-8 * scale)
+    return six_volume / base;
+  double largest_base = 0;
+  for(int i = 0; i < 4; ++i)
+    largest_base = (std::max)(largest_base,
       (q[(i + 1) & 3] - q[i]).cross(q[(i + 2) & 3] - q[i]).norm());
-  if(best_twice_area == 0)
-    return 0;
-  return 6.0 * std::abs(signed_volume(q)) / best_twice_area;
+  return largest_base == 0 ? 0.0 : six_volume / largest_base;
 }
 
 /// \ingroup PkgTilableSurfacesRef
@@ -347,9 +361,7 @@ Quad face_quad(typename boost::graph_traits<PolygonMesh>::face_descriptor f,
   for(auto v : CGAL::vertices_around_face(halfedge(f, pm), pm))
   {
     if(n == 4) { n = 5; break; }
-    const auto& p = get(vpm, v);
-    face_order[n++] = Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()),
-                                      CGAL::to_double(p.z()));
+    face_order[n++] = internal::to_eigen(get(vpm, v));
   }
   if(n != 4)
     throw Invalid_input("a face that is not a quad was given where a quad is needed",
@@ -372,9 +384,8 @@ double mean_edge_length(const PolygonMesh& pm,
   std::size_t count = 0;
   for(auto e : edges(pm))
   {
-    const auto& a = get(vpm, source(e, pm));
-    const auto& b = get(vpm, target(e, pm));
-    sum += std::sqrt(CGAL::to_double(CGAL::squared_distance(a, b)));
+    sum += (internal::to_eigen(get(vpm, source(e, pm))) -
+            internal::to_eigen(get(vpm, target(e, pm)))).norm();
     ++count;
   }
   return count == 0 ? 0.0 : sum / double(count);

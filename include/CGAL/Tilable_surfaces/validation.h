@@ -63,8 +63,7 @@ void validate_quad_mesh(const PolygonMesh& pm,
   Eigen::Vector3d hi = -lo;
   for(auto v : vertices(pm))
   {
-    const auto& p = get(vpm, v);
-    const Eigen::Vector3d x(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
+    const Eigen::Vector3d x = internal::to_eigen(get(vpm, v));
     if(!x.allFinite())
     {
       std::ostringstream out;

@@ -1,0 +1,63 @@
+// Copyright (c) 2026 Tilable_surfaces contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TILABLE_SURFACES_IO_CLUSTER_COLORS_H
+#define CGAL_TILABLE_SURFACES_IO_CLUSTER_COLORS_H
+
+/// \file cluster_colors.h
+/// A distinct, deterministic colour per cluster, for coloured output meshes.
+
+#include <CGAL/IO/Color.h>
+
+#include <array>
+#include <cmath>
+#include <cstddef>
+#include <set>
+#include <vector>
+
+namespace CGAL {
+namespace Tilable_surfaces {
+namespace IO {
+
+/// \ingroup PkgTilableSurfacesRef
+/// Returns `number_of_colors` pairwise distinct RGB colours. Hues follow the
+/// golden angle, so neighbouring ids get far-apart hues; saturation and value
+/// cycle through a few levels so that large counts stay distinct; an exact
+/// repeat (possible only for thousands of ids) is nudged to the next unused
+/// RGB triple. The same count always gives the same colours.
+inline std::vector<CGAL::IO::Color> cluster_colors(std::size_t number_of_colors)
+{
+  std::vector<CGAL::IO::Color> colors;
+  colors.reserve(number_of_colors);
+  std::set<std::array<int, 3> > used;
+  const double golden_angle = 0.38196601125010515; // (3 - sqrt(5)) / 2 turns
+  for(std::size_t i = 0; i < number_of_colors; ++i)
+  {
+    const double h = std::fmod(double(i) * golden_angle, 1.0) * 6.0;
+    const double s = 0.85 - 0.25 * double((i / 7) % 3);
+    const double v = 0.95 - 0.2 * double((i / 21) % 3);
+    const int sector = int(h) % 6;
+    const double f = h - std::floor(h);
+    const double p = v * (1 - s), q = v * (1 - s * f), t = v * (1 - s * (1 - f));
+    const double rgb[6][3] = {{v, t, p}, {q, v, p}, {p, v, t}, {p, q, v}, {t, p, v}, {v, p, q}};
+    std::array<int, 3> c{{int(std::lround(255 * rgb[sector][0])),
+                          int(std::lround(255 * rgb[sector][1])),
+                          int(std::lround(255 * rgb[sector][2]))}};
+    while(used.count(c))
+    {
+      // Next triple in lexicographic order: count in base 256.
+      int k = 2;
+      while(k >= 0 && c[k] == 255) c[k--] = 0;
+      if(k >= 0) ++c[k];
+    }
+    used.insert(c);
+    colors.emplace_back((unsigned char)c[0], (unsigned char)c[1], (unsigned char)c[2]);
+  }
+  return colors;
+}
+
+} // namespace IO
+} // namespace Tilable_surfaces
+} // namespace CGAL
+
+#endif // CGAL_TILABLE_SURFACES_IO_CLUSTER_COLORS_H

@@ -1,0 +1,122 @@
+// Copyright (c) 2026 Tilable_surfaces contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TILABLE_SURFACES_IO_TILE_CATALOG_H
+#define CGAL_TILABLE_SURFACES_IO_TILE_CATALOG_H
+
+/// \file tile_catalog.h
+/// The tile catalog a fabricator cuts from: one row per S-quad with its
+/// corners in a canonical frame, its lengths, volume, planarity, instance
+/// count and the worst deviation of an instance, all in the mesh's units.
+/// CSV, or JSON (with nlohmann::json, Debian's `nlohmann-json3-dev`).
+
+#include <CGAL/Tilable_surfaces/quad_shape.h>
+
+#include <nlohmann/json.hpp>
+
+#include <cstddef>
+#include <iomanip>
+#include <limits>
+#include <ostream>
+#include <vector>
+
+namespace CGAL {
+namespace Tilable_surfaces {
+namespace IO {
+
+/// \ingroup PkgTilableSurfacesRef
+/// One S-quad of a tile catalog.
+struct Tile
+{
+  /// The cluster id.
+  std::size_t id = 0;
+  /// The number of faces that are instances of this S-quad.
+  std::size_t instance_count = 0;
+  /// Corners t0..t3 in a canonical frame (t0 at the origin, t1 on +x, t2 in
+  /// the xy plane with y >= 0), in the mesh's units.
+  Quad corners;
+  /// The largest corner deviation of an instance from the S-quad after its
+  /// best proper rigid fit, in the mesh's units.
+  double worst_deviation = 0;
+};
+
+namespace internal {
+
+// The derived quantities of a tile, shared by both formats so they agree.
+struct Tile_row
+{
+  std::array<double, 4> edges;
+  std::array<double, 2> diagonals;
+  double signed_volume;
+  double planarity;
+};
+
+inline Tile_row tile_row(const Tile& t)
+{
+  return Tile_row{edge_lengths(t.corners), diagonal_lengths(t.corners),
+                  Tilable_surfaces::signed_volume(t.corners), planarity_defect(t.corners)};
+}
+
+} // namespace internal
+
+/// \ingroup PkgTilableSurfacesRef
+/// Writes the catalog as CSV with a header line: `id, instances`, the 12
+/// corner coordinates `t0x ... t3z`, the edge lengths `e01, e12, e23, e30`,
+/// the diagonals `d02, d13`, `signed_volume`, `planarity` (distance of t3 to
+/// the plane of t0, t1, t2) and `worst_deviation`. Full double precision.
+inline bool write_tile_catalog_CSV(std::ostream& os, const std::vector<Tile>& tiles)
+{
+  os << "id,instances,t0x,t0y,t0z,t1x,t1y,t1z,t2x,t2y,t2z,t3x,t3y,t3z,"
+        "e01,e12,e23,e30,d02,d13,signed_volume,planarity,worst_deviation\n";
+  os << std::setprecision(std::numeric_limits<double>::max_digits10);
+  for(const Tile& t : tiles)
+  {
+    const internal::Tile_row r = internal::tile_row(t);
+    os << t.id << ',' << t.instance_count;
+    for(const Eigen::Vector3d& p : t.corners)
+      os << ',' << p.x() << ',' << p.y() << ',' << p.z();
+    for(double e : r.edges) os << ',' << e;
+    for(double d : r.diagonals) os << ',' << d;
+    os << ',' << r.signed_volume << ',' << r.planarity << ',' << t.worst_deviation << '\n';
+  }
+  return bool(os);
+}
+
+/// \ingroup PkgTilableSurfacesRef
+/// The catalog as a JSON array, one object per tile with the fields of
+/// `write_tile_catalog_CSV()` (`corners` as 4 arrays of 3 numbers, `edges`
+/// and `diagonals` as arrays).
+inline nlohmann::json tile_catalog_json(const std::vector<Tile>& tiles)
+{
+  nlohmann::json catalog = nlohmann::json::array();
+  for(const Tile& t : tiles)
+  {
+    const internal::Tile_row r = internal::tile_row(t);
+    nlohmann::json corners = nlohmann::json::array();
+    for(const Eigen::Vector3d& p : t.corners)
+      corners.push_back({p.x(), p.y(), p.z()});
+    catalog.push_back({{"id", t.id},
+                       {"instances", t.instance_count},
+                       {"corners", corners},
+                       {"edges", r.edges},
+                       {"diagonals", r.diagonals},
+                       {"signed_volume", r.signed_volume},
+                       {"planarity", r.planarity},
+                       {"worst_deviation", t.worst_deviation}});
+  }
+  return catalog;
+}
+
+/// \ingroup PkgTilableSurfacesRef
+/// Writes `tile_catalog_json(tiles)` to `os`, indented.
+inline bool write_tile_catalog_JSON(std::ostream& os, const std::vector<Tile>& tiles)
+{
+  os << std::setw(2) << tile_catalog_json(tiles) << '\n';
+  return bool(os);
+}
+
+} // namespace IO
+} // namespace Tilable_surfaces
+} // namespace CGAL
+
+#endif // CGAL_TILABLE_SURFACES_IO_TILE_CATALOG_H

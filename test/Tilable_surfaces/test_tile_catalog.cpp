@@ -1,0 +1,90 @@
+// The tile catalog: every derived number checked against a hand-made tile.
+#include <CGAL/Tilable_surfaces/IO/tile_catalog.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace TS = CGAL::Tilable_surfaces;
+using Eigen::Vector3d;
+
+namespace {
+
+// Unit square with t3 lifted by h: edges 1, 1, sqrt(1+h^2), sqrt(1+h^2),
+// diagonals sqrt(2), sqrt(2+h^2), signed volume h/6, planarity h.
+TS::IO::Tile lifted_square(double h)
+{
+  TS::IO::Tile t;
+  t.id = 3;
+  t.instance_count = 17;
+  t.corners = TS::Quad{{Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(1, 1, 0), Vector3d(0, 1, h)}};
+  t.worst_deviation = 2.5e-7;
+  return t;
+}
+
+std::vector<std::string> split(const std::string& line)
+{
+  std::vector<std::string> cells;
+  std::stringstream in(line);
+  std::string cell;
+  while(std::getline(in, cell, ',')) cells.push_back(cell);
+  return cells;
+}
+
+} // namespace
+
+TEST(TileCatalog, CsvHasTheHandComputedValues)
+{
+  const double h = 0.5;
+  std::ostringstream out;
+  ASSERT_TRUE(TS::IO::write_tile_catalog_CSV(out, {lifted_square(h), lifted_square(0.0)}));
+  std::istringstream in(out.str());
+  std::string header, row, flat;
+  std::getline(in, header);
+  std::getline(in, row);
+  std::getline(in, flat);
+  const std::vector<std::string> names = split(header), cells = split(row);
+  ASSERT_EQ(names.size(), 23u);
+  ASSERT_EQ(cells.size(), names.size());
+  auto value = [&](const std::string& name) {
+    for(std::size_t i = 0; i < names.size(); ++i)
+      if(names[i] == name) return std::stod(cells[i]);
+    ADD_FAILURE() << "no column " << name;
+    return 0.0;
+  };
+  EXPECT_EQ(value("id"), 3);
+  EXPECT_EQ(value("instances"), 17);
+  EXPECT_EQ(value("t3z"), h);
+  EXPECT_EQ(value("e01"), 1.0);
+  EXPECT_EQ(value("e12"), 1.0);
+  EXPECT_DOUBLE_EQ(value("e23"), std::sqrt(1 + h * h));
+  EXPECT_DOUBLE_EQ(value("e30"), std::sqrt(1 + h * h));
+  EXPECT_DOUBLE_EQ(value("d02"), std::sqrt(2.0));
+  EXPECT_DOUBLE_EQ(value("d13"), std::sqrt(2 + h * h));
+  EXPECT_DOUBLE_EQ(value("signed_volume"), h / 6);
+  EXPECT_DOUBLE_EQ(value("planarity"), h);
+  EXPECT_EQ(value("worst_deviation"), 2.5e-7);
+  EXPECT_EQ(std::stod(split(flat)[names.size() - 2]), 0.0) << "a flat tile has planarity 0";
+}
+
+TEST(TileCatalog, JsonParsesBackWithTheSameNumbers)
+{
+  const double h = 0.25;
+  std::ostringstream out;
+  ASSERT_TRUE(TS::IO::write_tile_catalog_JSON(out, {lifted_square(h)}));
+  const nlohmann::json catalog = nlohmann::json::parse(out.str());
+  ASSERT_TRUE(catalog.is_array());
+  ASSERT_EQ(catalog.size(), 1u);
+  const nlohmann::json& t = catalog[0];
+  EXPECT_EQ(t["id"], 3);
+  EXPECT_EQ(t["instances"], 17);
+  EXPECT_EQ(t["corners"][3][2].get<double>(), h);
+  EXPECT_DOUBLE_EQ(t["edges"][2].get<double>(), std::sqrt(1 + h * h));
+  EXPECT_DOUBLE_EQ(t["diagonals"][1].get<double>(), std::sqrt(2 + h * h));
+  EXPECT_DOUBLE_EQ(t["signed_volume"].get<double>(), h / 6);
+  EXPECT_DOUBLE_EQ(t["planarity"].get<double>(), h);
+  EXPECT_EQ(t["worst_deviation"].get<double>(), 2.5e-7);
+}

@@ -8,6 +8,7 @@
 
 #include <CGAL/Tilable_surfaces/IO/cluster_colors.h>
 #include <CGAL/Tilable_surfaces/IO/write_PLY.h>
+#include <CGAL/Tilable_surfaces/IO/write_edge_components_PLY.h>
 
 #include <gtest/gtest.h>
 
@@ -128,4 +129,34 @@ TEST(WriteTiledPLY, WorksForAnotherMeshType)
   auto read_cluster = back.property_map<Mesh::Face_index, int>("f:cluster").first;
   int j = 0;
   for(auto f : faces(back)) EXPECT_EQ(read_cluster[f], j++ % 3);
+}
+
+TEST(WriteEdgeComponentsPLY, EachFanTriangleHasItsEdgesComponentColour)
+{
+  Mesh mesh;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(std::string(CGAL_TILABLE_SURFACES_TEST_DATA) +
+                                          "/monkey_saddle.off", mesh));
+  // Components by direction in the grid: edges along x are 0, along y are 1.
+  std::map<Mesh::Edge_index, int> component;
+  for(auto e : edges(mesh))
+  {
+    const auto d = mesh.point(target(e, mesh)) - mesh.point(source(e, mesh));
+    component[e] = std::abs(d.x()) > std::abs(d.y()) ? 0 : 1;
+  }
+  std::ostringstream out(std::ios::binary);
+  ASSERT_TRUE(TS::IO::write_edge_components_PLY(out, mesh, boost::make_assoc_property_map(component)));
+  const Mesh back = read_back(out.str());
+  ASSERT_EQ(back.number_of_faces(), 4 * mesh.number_of_faces());
+  auto color = back.property_map<Mesh::Face_index, CGAL::IO::Color>("f:color");
+  ASSERT_TRUE(color.second);
+  const auto palette = TS::IO::cluster_colors(2);
+  for(auto t : faces(back))
+  {
+    // The triangle's first two vertices are the ends of its mesh edge.
+    auto h = back.halfedge(t);
+    const auto a = back.point(target(h, back));
+    const auto b = back.point(target(next(h, back), back));
+    const int expected = std::abs(b.x() - a.x()) > std::abs(b.y() - a.y()) ? 0 : 1;
+    EXPECT_EQ(color.first[t], palette[expected]) << t;
+  }
 }

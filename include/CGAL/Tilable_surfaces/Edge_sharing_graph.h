@@ -23,7 +23,9 @@
 #include <array>
 #include <cstddef>
 #include <limits>
+#include <memory>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -92,7 +94,7 @@ public:
     : m_edge_index_map(CGAL::get_initialized_edge_index_map(pm))
   {
     const auto fim = CGAL::get_initialized_face_index_map(pm, np);
-    m_edge_node.assign(num_edges(pm), no_node());
+    std::vector<std::size_t> edge_nodes(num_edges(pm), no_node());
     reset(number_of_clusters);
 
     for(face_descriptor f : faces(pm))
@@ -119,13 +121,14 @@ public:
       {
         h = next(h, pm);
         const std::size_t node = 4 * std::size_t(c) + orientation.template_edge(j);
-        std::size_t& edge_node = m_edge_node[get(m_edge_index_map, edge(h, pm))];
+        std::size_t& edge_node = edge_nodes[get(m_edge_index_map, edge(h, pm))];
         if(edge_node == no_node())
           edge_node = node;
         else
           link(edge_node, node);
       }
     }
+    m_edge_node = std::make_shared<const std::vector<std::size_t> >(std::move(edge_nodes));
   }
 
   /// The number of clusters K the graph was built for (merged clusters
@@ -154,7 +157,7 @@ public:
   /// The component of mesh edge `e`.
   std::size_t component(edge_descriptor e) const
   {
-    const std::size_t node = m_edge_node.at(get(m_edge_index_map, e));
+    const std::size_t node = m_edge_node->at(get(m_edge_index_map, e));
     update_component_ids();
     return m_component_id[find(node)];
   }
@@ -236,7 +239,9 @@ private:
   typedef typename CGAL::GetInitializedEdgeIndexMap<PolygonMesh>::const_type Edge_index_map;
 
   Edge_index_map m_edge_index_map;
-  std::vector<std::size_t> m_edge_node;  // one S-quad edge node per mesh edge
+  // One S-quad edge node per mesh edge. Never modified after construction,
+  // so copies share it: copying the graph costs O(K), not O(#edges).
+  std::shared_ptr<const std::vector<std::size_t> > m_edge_node;
   std::vector<bool> m_alive;
   mutable Disjoint_sets m_sets{0};       // find_set() compresses paths
   std::size_t m_number_of_components = 0;

@@ -1,0 +1,383 @@
+// Copyright (c) 2026 Tilable_surfaces contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_BEAM_SEARCH_H
+#define CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_BEAM_SEARCH_H
+
+// Hierarchical clustering by binary merges with a beam of candidate
+// configurations (paper §3 "Cluster Merge", §5 "Clustering Enhancement").
+//
+// A configuration groups the N initial clusters; group g keeps the id of one
+// of its initial clusters, and that cluster's leader quad labels its S-quad.
+// From each configuration of the beam with k groups, every group proposes its
+// merge with its cheapest partner (kept exactly up to date after every merge;
+// proposing only the globally cheapest merges loses much flexibility), plus, with auto-merge, the pairs of groups whose S-quad edges
+// lie in the same 4 components of the edge-sharing graph (merging them keeps
+// the degree of flexibility). Every proposal is scored
+//   score = W' / W1 + lambda * (D0 - D') / D0,
+// W' the configuration's weight after the merge, W1 the weight of the
+// single-cluster configuration, D' its degree of flexibility (from a tiny
+// union-find over the components the merge joins) and D0 the degree of
+// flexibility of the initial clustering. The `width` best distinct proposals
+// form the beam for k - 1 groups.
+
+#include <CGAL/Tilable_surfaces/Edge_sharing_graph.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/fast_match.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/parallel_for.h>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <iostream>
+#include <map>
+#include <set>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Tilable_surfaces {
+namespace internal {
+
+inline std::uint64_t mix64(std::uint64_t x)
+{
+  // splitmix64 finalizer: a fixed, seed-free hash for partition signatures.
+  x += 0x9e3779b97f4a7c15ULL;
+  x = (x ^ (x >> 30)) * 0xbf58476d1ce4e5b9ULL;
+  x = (x ^ (x >> 27)) * 0x94d049bb133111ebULL;
+  return x ^ (x >> 31);
+}
+
+// The score of a configuration of weight w and degree of flexibility d:
+// w / w1 + lambda (d0 - d) / d0 (see the file comment).
+inline double configuration_score(double w, double w1, double lambda, std::size_t d,
+                                  std::size_t d0)
+{
+  return w / (w1 > 0 ? w1 : 1.0) +
+         lambda * (double(d0) - double(d)) / double((std::max)(d0, std::size_t(1)));
+}
+
+template <typename PolygonMesh, typename MergeCosts>
+struct Beam_state
+{
+  typedef typename MergeCosts::Group Group;
+
+  std::vector<std::vector<std::size_t> > members;  // initial clusters; empty: merged away
+  std::vector<Group> groups;
+  std::vector<std::size_t> faces;                  // number of faces per group
+  std::vector<std::size_t> partner;                // cheapest partner of each group
+  std::vector<double> partner_cost;
+  std::vector<std::uint64_t> key;                  // sum of member hashes
+  Edge_sharing_graph<PolygonMesh> graph;
+  double weight = 0;
+  std::size_t alive = 0;
+  std::uint64_t hash = 0;                          // partition signature
+
+  explicit Beam_state(const Edge_sharing_graph<PolygonMesh>& g) : graph(g) {}
+};
+
+template <typename PolygonMesh, typename MergeCosts>
+class Beam_search
+{
+public:
+  typedef Beam_state<PolygonMesh, MergeCosts> State;
+
+  // `leaders[c]` is the quad labelling initial cluster c's S-quad.
+  Beam_search(const MergeCosts& costs, const std::vector<Quad>& leaders,
+              Orientation_policy policy, double single_cluster_weight,
+              double flexibility_penalty, std::size_t width, bool auto_merge, bool verbose)
+    : m_costs(costs), m_leaders(leaders), m_policy(policy)
+    , m_w1(single_cluster_weight)
+    , m_lambda(flexibility_penalty), m_width((std::max)(width, std::size_t(1)))
+    , m_auto_merge(auto_merge), m_verbose(verbose)
+  {}
+
+  // The initial configuration: one group per initial cluster.
+  State initial_state(const Edge_sharing_graph<PolygonMesh>& graph,
+                      const std::vector<std::size_t>& faces_per_cluster) const
+  {
+    const std::size_t n = faces_per_cluster.size();
+    State s(graph);
+    s.members.resize(n);
+    s.groups.resize(n);
+    s.key.resize(n);
+    s.faces = faces_per_cluster;
+    for(std::size_t c = 0; c < n; ++c)
+    {
+      s.members[c] = {c};
+      s.groups[c] = m_costs.initial_group(c);
+      s.key[c] = mix64(c);
+      s.hash += mix64(s.key[c]);
+      s.weight += s.groups[c].weight;
+    }
+    s.alive = n;
+    s.partner.assign(n, no_group());
+    s.partner_cost.assign(n, 0.0);
+    parallel_for(n, [&](std::size_t c) { find_partner(s, c); });
+    return s;
+  }
+
+  // Merges down to `k` groups; returns the final beam, best score first.
+  std::vector<State> run(State initial, std::size_t k, std::size_t initial_dof) const
+  {
+    std::vector<State> beam;
+    beam.push_back(std::move(initial));
+    while(beam.front().alive > k)
+    {
+      std::vector<Proposal> proposals;
+      for(std::size_t b = 0; b < beam.size(); ++b)
+        propose(beam[b], b, initial_dof, proposals);
+      std::sort(proposals.begin(), proposals.end());
+      std::vector<Proposal> chosen;
+      std::unordered_set<std::uint64_t> seen;
+      for(const Proposal& p : proposals)
+      {
+        if(chosen.size() == m_width)
+          break;
+        if(seen.insert(p.hash).second)
+          chosen.push_back(p);
+      }
+      // The last child of a parent takes the parent's storage.
+      std::vector<std::size_t> last_child(beam.size(), no_group());
+      for(std::size_t i = 0; i < chosen.size(); ++i)
+        last_child[chosen[i].parent] = i;
+      std::vector<State> next;
+      next.reserve(chosen.size());
+      for(std::size_t i = 0; i < chosen.size(); ++i)
+      {
+        const Proposal& p = chosen[i];
+        next.push_back(last_child[p.parent] == i ? std::move(beam[p.parent]) : beam[p.parent]);
+        apply(next.back(), p);
+      }
+      beam.swap(next);
+      if(m_verbose && beam.front().alive % 50 == 0)
+        std::cerr << "  beam: " << beam.front().alive << " clusters, best weight "
+                  << beam.front().weight << ", DOF " << beam.front().graph.degree_of_flexibility()
+                  << std::endl;
+    }
+    return beam;
+  }
+
+private:
+  struct Proposal
+  {
+    double score;
+    std::size_t parent, kept, removed;
+    Quad_orientation correspondence;
+    double cost;
+    std::uint64_t hash;
+    bool operator<(const Proposal& o) const
+    {
+      if(score != o.score) return score < o.score;
+      if(parent != o.parent) return parent < o.parent;
+      if(kept != o.kept) return kept < o.kept;
+      return removed < o.removed;
+    }
+  };
+
+  static std::size_t no_group() { return std::size_t(-1); }
+
+  double cost(const State& s, std::size_t a, std::size_t b) const
+  {
+    return m_costs.cost(s.members[a], s.groups[a], s.members[b], s.groups[b]);
+  }
+
+  // Cheapest partner of group c among the live groups (ties: smallest id).
+  void find_partner(State& s, std::size_t c) const
+  {
+    s.partner[c] = no_group();
+    for(std::size_t d = 0; d < s.members.size(); ++d)
+    {
+      if(d == c || s.members[d].empty())
+        continue;
+      const double x = cost(s, c, d);
+      if(s.partner[c] == no_group() || x < s.partner_cost[c])
+      {
+        s.partner[c] = d;
+        s.partner_cost[c] = x;
+      }
+    }
+  }
+
+  // Template corner i of group a's S-quad <-> corner correspondence(i) of b's.
+  Quad_orientation correspondence(std::size_t a, std::size_t b) const
+  {
+    const bool swapped = b < a;
+    const std::pair<std::size_t, std::size_t> key = swapped ? std::make_pair(b, a)
+                                                             : std::make_pair(a, b);
+    auto it = m_correspondences.find(key);
+    if(it == m_correspondences.end())
+      it = m_correspondences.emplace(key, fast_best_match(m_leaders[key.first],
+                                                          m_leaders[key.second],
+                                                          m_policy).orientation).first;
+    return swapped ? it->second.inverse() : it->second;
+  }
+
+  // Computes the missing correspondences of `pairs` (a < b) in parallel: the
+  // sequential part of the beam is dominated by them otherwise.
+  void prefetch_correspondences(const std::vector<std::pair<std::size_t, std::size_t> >& pairs) const
+  {
+    std::vector<std::pair<std::size_t, std::size_t> > missing;
+    for(const auto& p : pairs)
+      if(!m_correspondences.count(p)) missing.push_back(p);
+    std::vector<Quad_orientation> found(missing.size());
+    parallel_for(missing.size(), [&](std::size_t i) {
+      found[i] = fast_best_match(m_leaders[missing[i].first], m_leaders[missing[i].second],
+                                 m_policy).orientation;
+    });
+    for(std::size_t i = 0; i < missing.size(); ++i)
+      m_correspondences.emplace(missing[i], found[i]);
+  }
+
+  // Number of components joined by merging `removed` into `kept`.
+  static std::size_t joined_components(const State& s, std::size_t kept, std::size_t removed,
+                                        Quad_orientation corr)
+  {
+    std::array<std::size_t, 8> id, parent;
+    std::size_t n = 0;
+    auto node = [&](std::size_t c) {
+      for(std::size_t i = 0; i < n; ++i) if(id[i] == c) return i;
+      id[n] = c; parent[n] = n; return n++;
+    };
+    auto root = [&](std::size_t i) { while(parent[i] != i) i = parent[i]; return i; };
+    std::size_t joined = 0;
+    for(int k = 0; k < 4; ++k)
+    {
+      const std::size_t a = root(node(s.graph.component(kept, k)));
+      const std::size_t b = root(node(s.graph.component(removed, corr.face_edge(k))));
+      if(a != b) { parent[b] = a; ++joined; }
+    }
+    return joined;
+  }
+
+  void add_proposal(const State& s, std::size_t parent, std::size_t a, std::size_t b,
+                    std::size_t initial_dof, std::vector<Proposal>& out) const
+  {
+    const bool a_kept = s.faces[a] > s.faces[b] || (s.faces[a] == s.faces[b] && a < b);
+    Proposal p;
+    p.parent = parent;
+    p.kept = a_kept ? a : b;
+    p.removed = a_kept ? b : a;
+    p.correspondence = correspondence(p.kept, p.removed);
+    p.cost = cost(s, a, b);
+    const std::size_t dof = s.graph.degree_of_flexibility() -
+                            joined_components(s, p.kept, p.removed, p.correspondence);
+    p.score = configuration_score(s.weight + p.cost, m_w1, m_lambda, dof, initial_dof);
+    p.hash = s.hash - mix64(s.key[a]) - mix64(s.key[b]) + mix64(s.key[a] + s.key[b]);
+    out.push_back(p);
+  }
+
+  void propose(const State& s, std::size_t parent, std::size_t initial_dof,
+               std::vector<Proposal>& out) const
+  {
+    std::vector<std::pair<double, std::pair<std::size_t, std::size_t> > > cheapest;
+    for(std::size_t c = 0; c < s.members.size(); ++c)
+    {
+      if(s.members[c].empty())
+        continue;
+      const std::size_t d = s.partner[c];
+      if(d < c && s.partner[d] == c)
+        continue;  // mutual partners: proposed once
+      cheapest.push_back({s.partner_cost[c], {(std::min)(c, d), (std::max)(c, d)}});
+    }
+    std::sort(cheapest.begin(), cheapest.end());
+    std::vector<std::pair<std::size_t, std::size_t> > pairs;
+    for(const auto& c : cheapest) pairs.push_back(c.second);
+    prefetch_correspondences(pairs);
+    std::set<std::pair<std::size_t, std::size_t> > proposed;
+    for(std::size_t i = 0; i < cheapest.size(); ++i)
+    {
+      add_proposal(s, parent, cheapest[i].second.first, cheapest[i].second.second,
+                   initial_dof, out);
+      proposed.insert(cheapest[i].second);
+    }
+    if(!m_auto_merge)
+      return;
+
+    // Auto-merge: groups whose 4 components coincide (as a set first, then
+    // edge by edge under the correspondence of their S-quads).
+    std::vector<std::pair<std::array<std::size_t, 4>, std::size_t> > patterns;
+    for(std::size_t c = 0; c < s.members.size(); ++c)
+      if(!s.members[c].empty())
+      {
+        std::array<std::size_t, 4> p = s.graph.cluster_pattern(c);
+        std::sort(p.begin(), p.end());
+        patterns.push_back({p, c});
+      }
+    std::sort(patterns.begin(), patterns.end());
+    for(std::size_t i = 0; i + 1 < patterns.size(); ++i)
+    {
+      if(patterns[i].first != patterns[i + 1].first)
+        continue;
+      const std::size_t a = patterns[i].second, b = patterns[i + 1].second;
+      if(proposed.count({a, b}))
+        continue;
+      const Quad_orientation corr = correspondence(a, b);
+      bool identical = true;
+      for(int k = 0; k < 4; ++k)
+        identical = identical &&
+                    s.graph.component(a, k) == s.graph.component(b, corr.face_edge(k));
+      if(identical)
+        add_proposal(s, parent, a, b, initial_dof, out);
+    }
+  }
+
+  void apply(State& s, const Proposal& p) const
+  {
+    const std::size_t kept = p.kept, removed = p.removed;
+    s.graph.merge_clusters(kept, removed, p.correspondence);
+    s.groups[kept] = m_costs.merged(s.groups[kept], s.groups[removed], p.cost);
+    s.members[kept].insert(s.members[kept].end(), s.members[removed].begin(),
+                           s.members[removed].end());
+    s.members[removed].clear();
+    s.faces[kept] += s.faces[removed];
+    s.key[kept] += s.key[removed];
+    s.hash = p.hash;
+    s.weight += p.cost;
+    --s.alive;
+
+    // Only costs involving `kept` changed; groups whose partner was one of
+    // the two merged groups look again among all groups.
+    std::vector<double> to_kept(s.members.size(), 0.0);
+    parallel_for(s.members.size(), [&](std::size_t c) {
+      if(c != kept && !s.members[c].empty())
+        to_kept[c] = cost(s, kept, c);
+    });
+    std::vector<std::size_t> stale;
+    s.partner[kept] = no_group();
+    for(std::size_t c = 0; c < s.members.size(); ++c)
+    {
+      if(c == kept || s.members[c].empty())
+        continue;
+      if(s.partner[kept] == no_group() || to_kept[c] < s.partner_cost[kept])
+      {
+        s.partner[kept] = c;
+        s.partner_cost[kept] = to_kept[c];
+      }
+      if(s.partner[c] == kept || s.partner[c] == removed)
+        stale.push_back(c);
+      else if(to_kept[c] < s.partner_cost[c] ||
+              (to_kept[c] == s.partner_cost[c] && kept < s.partner[c]))
+      {
+        s.partner[c] = kept;
+        s.partner_cost[c] = to_kept[c];
+      }
+    }
+    parallel_for(stale.size(), [&](std::size_t i) { find_partner(s, stale[i]); });
+  }
+
+  const MergeCosts& m_costs;
+  const std::vector<Quad>& m_leaders;
+  Orientation_policy m_policy;
+  double m_w1, m_lambda;
+  std::size_t m_width;
+  bool m_auto_merge, m_verbose;
+  mutable std::map<std::pair<std::size_t, std::size_t>, Quad_orientation> m_correspondences;
+};
+
+} // namespace internal
+} // namespace Tilable_surfaces
+} // namespace CGAL
+
+#endif // CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_BEAM_SEARCH_H

@@ -1,0 +1,127 @@
+// Copyright (c) 2026 Tilable_surfaces contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_CLUSTER_ANALYSIS_H
+#define CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_CLUSTER_ANALYSIS_H
+
+// What every clustering ends with, and what the editing functions redo: the
+// S-quad of each cluster, the orientation of each face that best matches it,
+// the split of a cluster into two, and the edge-sharing graph of a labelling.
+
+#include <CGAL/Tilable_surfaces/Edge_sharing_graph.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/kmeans.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/s_quad_template.h>
+
+#include <CGAL/Random.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <boost/property_map/property_map.hpp>
+
+#include <cstddef>
+#include <vector>
+
+namespace CGAL {
+namespace Tilable_surfaces {
+namespace internal {
+
+// Per cluster, its faces (increasing indices).
+inline std::vector<std::vector<std::size_t> >
+cluster_members(const std::vector<std::size_t>& label, std::size_t k)
+{
+  std::vector<std::vector<std::size_t> > members(k);
+  for(std::size_t f = 0; f < label.size(); ++f)
+    members[label[f]].push_back(f);
+  return members;
+}
+
+struct Cluster_shapes
+{
+  std::vector<Quad> s_quads;                   // per cluster
+  std::vector<Quad_orientation> orientation;   // per face
+  std::vector<double> distance;                // per face: s(S-quad, face)
+};
+
+// S-quads by Procrustes averaging, then each face tagged with its best match.
+inline Cluster_shapes cluster_shapes(const std::vector<Quad>& quads,
+                                     const std::vector<std::size_t>& label, std::size_t k,
+                                     Orientation_policy policy)
+{
+  Cluster_shapes r;
+  const std::vector<std::vector<std::size_t> > members = cluster_members(label, k);
+  r.s_quads.resize(k);
+  for(std::size_t c = 0; c < k; ++c)
+    r.s_quads[c] = procrustes_mean(quads, members[c], policy);
+  r.orientation.resize(quads.size());
+  r.distance.resize(quads.size());
+  parallel_for(quads.size(), [&](std::size_t f) {
+    const Quad_match m = fast_best_match(r.s_quads[label[f]], quads[f], policy);
+    r.orientation[f] = m.orientation;
+    r.distance[f] = m.dissimilarity;
+  });
+  return r;
+}
+
+// The best 2-clustering we look for when splitting `members` (size >= 2):
+// 2-means on descriptors, then exact refinement (each face goes to the nearer
+// of the two S-quads, twice). Returns, per member, whether it goes to the new
+// part; the part with members[0] is never the new one. When all descriptors
+// coincide the members are cut in two halves in index order.
+inline std::vector<bool> split_in_two(const std::vector<Quad>& quads,
+                                      const std::vector<Quad_descriptor>& descriptors,
+                                      const std::vector<std::size_t>& members,
+                                      Orientation_policy policy, CGAL::Random& random)
+{
+  const std::size_t m = members.size();
+  std::vector<bool> second(m, false);
+  const std::vector<std::size_t> two = kmeans(descriptors, members, 2, random);
+  if(two.empty())
+  {
+    for(std::size_t i = m / 2; i < m; ++i) second[i] = true;
+    return second;
+  }
+  for(std::size_t i = 0; i < m; ++i) second[i] = (two[i] != two[0]);
+
+  for(int round = 0; round < 2; ++round)
+  {
+    std::vector<std::size_t> part[2];
+    for(std::size_t i = 0; i < m; ++i) part[second[i] ? 1 : 0].push_back(members[i]);
+    const Quad t0 = procrustes_mean(quads, part[0], policy);
+    const Quad t1 = procrustes_mean(quads, part[1], policy);
+    std::vector<bool> next(m);
+    std::vector<char> to_second(m);
+    parallel_for(m, [&](std::size_t i) {
+      to_second[i] = fast_best_match(t1, quads[members[i]], policy).dissimilarity <
+                     fast_best_match(t0, quads[members[i]], policy).dissimilarity;
+    });
+    std::size_t count = 0;
+    for(std::size_t i = 0; i < m; ++i)
+    {
+      next[i] = (to_second[i] != 0) != (to_second[0] != 0);
+      count += next[i];
+    }
+    if(count == 0 || count == m || next == second)
+      break;
+    second.swap(next);
+  }
+  return second;
+}
+
+// The edge-sharing graph of a labelling given as per-face vectors indexed by
+// `fim`.
+template <typename PolygonMesh, typename FaceIndexMap>
+Edge_sharing_graph<PolygonMesh>
+edge_sharing_graph(const PolygonMesh& pm, FaceIndexMap fim, const std::vector<std::size_t>& label,
+                   const std::vector<Quad_orientation>& orientation, std::size_t k)
+{
+  std::vector<int> o(orientation.size());
+  for(std::size_t f = 0; f < o.size(); ++f) o[f] = orientation[f].index();
+  return Edge_sharing_graph<PolygonMesh>(
+    pm, k, boost::make_iterator_property_map(label.begin(), fim),
+    boost::make_iterator_property_map(o.begin(), fim), CGAL::parameters::face_index_map(fim));
+}
+
+} // namespace internal
+} // namespace Tilable_surfaces
+} // namespace CGAL
+
+#endif // CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_CLUSTER_ANALYSIS_H

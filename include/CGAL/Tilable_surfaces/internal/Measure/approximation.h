@@ -1,0 +1,86 @@
+// Copyright (c) 2026 Tilable_surfaces contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TILABLE_SURFACES_INTERNAL_MEASURE_APPROXIMATION_H
+#define CGAL_TILABLE_SURFACES_INTERNAL_MEASURE_APPROXIMATION_H
+
+// Distance from a result surface to the input surface (method notes §4), with
+// CGAL's AABB tree. A quad is the fan of 4 triangles around its vertex
+// centroid: no diagonal is preferred, and the centroid lies on the bilinear
+// patch of the quad. The result, as the same kind of surface, is sampled at
+// its vertices and, on each face, at the apex of the fan, the midpoints of
+// the 4 edges and the centroids of the 4 fan triangles; so a surface
+// measured against itself is at distance 0.
+
+#include <CGAL/Tilable_surfaces/internal/Optimization/Tilable_problem.h>
+
+#include <CGAL/AABB_traits.h>
+#include <CGAL/AABB_tree.h>
+#include <CGAL/AABB_triangle_primitive.h>
+#include <CGAL/Simple_cartesian.h>
+
+#include <algorithm>
+#include <cmath>
+#include <vector>
+
+namespace CGAL {
+namespace Tilable_surfaces {
+namespace internal {
+
+struct Distance_summary
+{
+  double max = 0, mean = 0;
+};
+
+// Max and mean distance of the samples of `result` to `input` (both with the
+// faces of `problem`), in the units of the points.
+inline Distance_summary distance_to_input(const Tilable_problem& problem, const Point_matrix& input,
+                                          const Point_matrix& result)
+{
+  typedef CGAL::Simple_cartesian<double> K;
+  typedef std::vector<K::Triangle_3>::const_iterator Iterator;
+  typedef CGAL::AABB_triangle_primitive<K, Iterator> Primitive;
+  typedef CGAL::AABB_tree<CGAL::AABB_traits<K, Primitive>> Tree;
+
+  auto point = [](const Eigen::Vector3d& p) { return K::Point_3(p.x(), p.y(), p.z()); };
+  std::vector<K::Triangle_3> triangles;
+  for(std::size_t f = 0; f < problem.face_corners.size(); ++f)
+  {
+    const Quad q = instance(problem, input, f);
+    const K::Point_3 centre = point((q[0] + q[1] + q[2] + q[3]) / 4.0);
+    for(int i = 0; i < 4; ++i)
+      triangles.emplace_back(point(q[i]), point(q[(i + 1) & 3]), centre);
+  }
+  Tree tree(triangles.begin(), triangles.end());
+  tree.accelerate_distance_queries();
+
+  Distance_summary s;
+  std::size_t count = 0;
+  auto sample = [&](const Eigen::Vector3d& p) {
+    const double d = std::sqrt(tree.squared_distance(point(p)));
+    s.max = (std::max)(s.max, d);
+    s.mean += d;
+    ++count;
+  };
+  for(Eigen::Index v = 0; v < result.rows(); ++v)
+    sample(result.row(v).transpose());
+  for(std::size_t f = 0; f < problem.face_corners.size(); ++f)
+  {
+    const Quad q = instance(problem, result, f);
+    const Eigen::Vector3d centre = (q[0] + q[1] + q[2] + q[3]) / 4.0;
+    sample(centre);
+    for(int i = 0; i < 4; ++i)
+    {
+      sample(0.5 * (q[i] + q[(i + 1) & 3]));
+      sample((q[i] + q[(i + 1) & 3] + centre) / 3.0);
+    }
+  }
+  s.mean /= double(count);
+  return s;
+}
+
+} // namespace internal
+} // namespace Tilable_surfaces
+} // namespace CGAL
+
+#endif // CGAL_TILABLE_SURFACES_INTERNAL_MEASURE_APPROXIMATION_H

@@ -1,0 +1,112 @@
+// Copyright (c) 2026 Tilable_surfaces contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TILABLE_SURFACES_INTERNAL_MEASURE_CONGRUENCE_H
+#define CGAL_TILABLE_SURFACES_INTERNAL_MEASURE_CONGRUENCE_H
+
+// Congruence of the instances of each cluster, by rigid fits only (no energy):
+// the S-quad is the Procrustes mean of the instances, and a cluster's error is
+// its worst instance's largest corner deviation after the best proper rigid
+// fit of the S-quad onto it.
+
+#include <CGAL/Tilable_surfaces/internal/Optimization/Tilable_problem.h>
+#include <CGAL/Tilable_surfaces/quad_shape.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace CGAL {
+namespace Tilable_surfaces {
+namespace internal {
+
+// Generalized Procrustes mean under proper rigid motions: align every instance
+// onto the current mean, average, repeat until the mean stops moving. Exact
+// (one pass) when the instances are congruent.
+inline Quad procrustes_mean(const std::vector<Quad>& instances)
+{
+  Quad mean = instances.front();
+  for(int pass = 0; pass < 10; ++pass)
+  {
+    Quad sum{{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
+              Eigen::Vector3d::Zero()}};
+    for(const Quad& q : instances)
+    {
+      const Quad aligned = best_rigid_fit(q, mean)(q);
+      for(int i = 0; i < 4; ++i)
+        sum[i] += aligned[i];
+    }
+    double change = 0, size = 0;
+    for(int i = 0; i < 4; ++i)
+    {
+      sum[i] /= double(instances.size());
+      change = (std::max)(change, (sum[i] - mean[i]).norm());
+      size = (std::max)(size, (mean[i] - mean[0]).norm());
+    }
+    mean = sum;
+    if(change <= 1e-14 * size)
+      break;
+  }
+  return mean;
+}
+
+// `q` moved rigidly so that t0 is at the origin, t1 on the +x axis and t2 in
+// the xy plane with y >= 0 (a proper motion: the signed volume is kept).
+inline Quad canonical_frame(const Quad& q)
+{
+  const Eigen::Vector3d x = (q[1] - q[0]).normalized();
+  const Eigen::Vector3d z = x.cross(q[2] - q[0]).normalized();
+  Eigen::Matrix3d R;
+  R.row(0) = x.transpose();
+  R.row(1) = z.cross(x).transpose();
+  R.row(2) = z.transpose();
+  Quad r;
+  for(int i = 0; i < 4; ++i)
+    r[i] = R * (q[i] - q[0]);
+  return r;
+}
+
+struct Cluster_congruence
+{
+  std::vector<Quad> s_quads;       // canonical frame; empty clusters get zeros
+  std::vector<std::size_t> sizes;  // instances per cluster
+  std::vector<double> errors;      // absolute lengths
+};
+
+inline Cluster_congruence cluster_congruence(const Tilable_problem& problem, const Point_matrix& X)
+{
+  const std::size_t K = problem.number_of_clusters;
+  std::vector<std::vector<Quad>> members(K);
+  for(std::size_t f = 0; f < problem.face_corners.size(); ++f)
+    members[problem.face_cluster[f]].push_back(instance(problem, X, f));
+
+  Cluster_congruence result;
+  result.s_quads.assign(K, Quad{{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
+                                 Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()}});
+  result.errors.assign(K, 0.0);
+  result.sizes.assign(K, 0);
+  for(std::size_t c = 0; c < K; ++c)
+  {
+    result.sizes[c] = members[c].size();
+    if(members[c].empty())
+      continue;
+    const Quad mean = procrustes_mean(members[c]);
+    result.s_quads[c] = canonical_frame(mean);
+    for(const Quad& q : members[c])
+      result.errors[c] = (std::max)(result.errors[c], rigid_fit_deviation(mean, q));
+  }
+  return result;
+}
+
+// The congruence error of method notes §1: worst cluster error / mean edge length.
+inline double congruence_error(const Tilable_problem& problem, const Point_matrix& X)
+{
+  const std::vector<double> errors = cluster_congruence(problem, X).errors;
+  const double worst = errors.empty() ? 0.0 : *std::max_element(errors.begin(), errors.end());
+  return worst / mean_edge_length(problem, X);
+}
+
+} // namespace internal
+} // namespace Tilable_surfaces
+} // namespace CGAL
+
+#endif // CGAL_TILABLE_SURFACES_INTERNAL_MEASURE_CONGRUENCE_H

@@ -1,0 +1,64 @@
+// Copyright (c) 2026 Tilable_surfaces contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_SOLVER_SETTINGS_H
+#define CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_SOLVER_SETTINGS_H
+
+// What both solvers receive and return. They work on positions normalized to
+// a unit bounding-box diagonal, so every tolerance below is relative.
+
+#include <CGAL/Tilable_surfaces/internal/Optimization/Tilable_problem.h>
+#include <CGAL/Tilable_surfaces/internal/Optimization/energy_terms.h>
+
+#include <Eigen/Sparse>
+
+#include <vector>
+
+namespace CGAL {
+namespace Tilable_surfaces {
+namespace internal {
+
+struct Solver_settings
+{
+  Energy_terms weights;             // mu1..mu5
+  int max_iterations = 100;
+  double congruence_tolerance = 1e-6;
+  double convergence_tolerance = 1e-9;
+};
+
+// The data of one solve: X0 and D are fixed, X is updated in place.
+struct Solver_input
+{
+  const Tilable_problem& problem;
+  const Eigen::SparseMatrix<double>& D; // fairness operator
+  const Point_matrix& X0;               // normalized input positions
+  const std::vector<bool>& fixed;       // vertices that must not move
+};
+
+struct Solver_report
+{
+  int iterations = 0;
+  double congruence_error = 0; // as measured after the last iteration
+  double objective = 0;        // the solver's own objective at the end
+};
+
+// Free unknowns: variable[v] is 3 * (rank of v among the free vertices), or
+// -1 for a fixed vertex; returns the number of unknowns.
+inline int number_free_unknowns(const std::vector<bool>& fixed, std::vector<int>& variable)
+{
+  variable.assign(fixed.size(), -1);
+  int n = 0;
+  for(std::size_t v = 0; v < fixed.size(); ++v)
+    if(!fixed[v])
+    {
+      variable[v] = n;
+      n += 3;
+    }
+  return n;
+}
+
+} // namespace internal
+} // namespace Tilable_surfaces
+} // namespace CGAL
+
+#endif // CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_SOLVER_SETTINGS_H

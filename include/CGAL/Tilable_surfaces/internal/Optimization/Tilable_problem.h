@@ -1,0 +1,174 @@
+// Copyright (c) 2026 Tilable_surfaces contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_TILABLE_PROBLEM_H
+#define CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_TILABLE_PROBLEM_H
+
+// The mesh and its clustering turned into plain arrays indexed by vertex
+// index: the solvers and the measurements work on these, never on the mesh.
+
+#include <CGAL/Tilable_surfaces/Edge_sharing_graph.h>
+#include <CGAL/Tilable_surfaces/exceptions.h>
+#include <CGAL/Tilable_surfaces/named_parameters.h>
+#include <CGAL/Tilable_surfaces/quad_shape.h>
+
+#include <CGAL/boost/graph/helpers.h>
+#include <CGAL/boost/graph/iterator.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <Eigen/Core>
+
+#include <array>
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Tilable_surfaces {
+namespace internal {
+
+// Positions of the n vertices as an n x 3 row-major matrix, so that a flat
+// vector of 3n coordinates (x0 y0 z0 x1 ...) maps onto it without a copy.
+typedef Eigen::Matrix<double, Eigen::Dynamic, 3, Eigen::RowMajor> Point_matrix;
+
+// Sets of scalar quantities that must be equal on a tiled surface: group g is
+// items[begin[g] .. begin[g+1]). An item lists vertex indices; a squared
+// distance uses the first two, a signed volume all four.
+struct Equality_groups
+{
+  std::vector<std::array<int, 4>> items;
+  std::vector<std::size_t> begin{0};
+
+  std::size_t number_of_groups() const { return begin.size() - 1; }
+  void close_group() { begin.push_back(items.size()); }
+};
+
+struct Tilable_problem
+{
+  Point_matrix points;                          // in the mesh's own units
+  std::vector<std::array<int, 4>> face_corners; // corner i = template corner t_i
+  std::vector<std::size_t> face_cluster;
+  std::size_t number_of_clusters = 0;
+  std::size_t degree_of_flexibility = 0;
+  std::vector<std::array<int, 2>> edges;
+  Equality_groups edge_groups;     // F_e: mesh edges, one group per component
+  Equality_groups diagonal_groups; // F_a: diagonals t0t2 and t1t3, two groups per cluster
+  Equality_groups volume_groups;   // F_o: corners, one group per cluster
+
+  std::size_t number_of_vertices() const { return std::size_t(points.rows()); }
+};
+
+template <typename PolygonMesh, typename VertexPointMap, typename VertexIndexMap>
+Point_matrix read_points(const PolygonMesh& pm, const VertexPointMap& vpm, const VertexIndexMap& vim)
+{
+  Point_matrix points(num_vertices(pm), 3);
+  for(auto v : vertices(pm))
+  {
+    const auto& p = get(vpm, v);
+    points.row(get(vim, v)) << CGAL::to_double(p.x()), CGAL::to_double(p.y()),
+                               CGAL::to_double(p.z());
+  }
+  return points;
+}
+
+// The clustering of `pm` read from the named parameters `face_cluster_map`
+// and `face_orientation_map` (both required), with K = 1 + the largest id.
+// Throws Invalid_input for missing maps, ids out of range or non-quad faces;
+// the mesh itself is checked by validate_quad_mesh() beforehand.
+template <typename PolygonMesh, typename NamedParameters>
+Tilable_problem make_tilable_problem(const PolygonMesh& pm, const NamedParameters& np)
+{
+  using parameters::get_parameter;
+  using parameters::is_default_parameter;
+  namespace TS_np = CGAL::Tilable_surfaces::internal_np;
+  static_assert(!is_default_parameter<NamedParameters, TS_np::face_cluster_t>::value,
+                "the named parameter face_cluster_map is required");
+  static_assert(!is_default_parameter<NamedParameters, TS_np::face_orientation_t>::value,
+                "the named parameter face_orientation_map is required");
+  const auto cluster_map = get_parameter(np, TS_np::face_cluster);
+  const auto orientation_map = get_parameter(np, TS_np::face_orientation);
+  const auto vpm = parameters::choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                                get_const_property_map(CGAL::vertex_point, pm));
+  const auto vim = CGAL::get_initialized_vertex_index_map(pm, np);
+
+  long long largest = -1;
+  for(auto f : faces(pm))
+    largest = (std::max)(largest, static_cast<long long>(get(cluster_map, f)));
+
+  Tilable_problem problem;
+  problem.number_of_clusters = std::size_t(largest + 1);
+  // The graph checks the ranges of clusters and orientations.
+  const Edge_sharing_graph<PolygonMesh> graph(pm, problem.number_of_clusters, cluster_map,
+                                              orientation_map, np);
+  problem.degree_of_flexibility = graph.degree_of_flexibility();
+  problem.points = read_points(pm, vpm, vim);
+
+  for(auto f : faces(pm))
+  {
+    std::array<int, 4> face_order;
+    int n = 0;
+    for(auto v : CGAL::vertices_around_face(halfedge(f, pm), pm))
+      face_order[n++] = int(get(vim, v));
+    const Quad_orientation o(static_cast<int>(get(orientation_map, f)));
+    problem.face_corners.push_back({{face_order[o(0)], face_order[o(1)],
+                                     face_order[o(2)], face_order[o(3)]}});
+    problem.face_cluster.push_back(std::size_t(get(cluster_map, f)));
+  }
+
+  std::vector<std::vector<std::array<int, 4>>> by_component(problem.degree_of_flexibility);
+  for(auto e : edges(pm))
+  {
+    const std::array<int, 2> ends{{int(get(vim, source(e, pm))), int(get(vim, target(e, pm)))}};
+    problem.edges.push_back(ends);
+    by_component[graph.component(e)].push_back({{ends[0], ends[1], -1, -1}});
+  }
+  for(const auto& group : by_component)
+  {
+    problem.edge_groups.items.insert(problem.edge_groups.items.end(), group.begin(), group.end());
+    problem.edge_groups.close_group();
+  }
+
+  std::vector<std::vector<std::size_t>> by_cluster(problem.number_of_clusters);
+  for(std::size_t i = 0; i < problem.face_cluster.size(); ++i)
+    by_cluster[problem.face_cluster[i]].push_back(i);
+  for(const auto& members : by_cluster)
+  {
+    for(int d = 0; d < 2; ++d)
+    {
+      for(std::size_t i : members)
+      {
+        const auto& c = problem.face_corners[i];
+        problem.diagonal_groups.items.push_back({{c[d], c[d + 2], -1, -1}});
+      }
+      problem.diagonal_groups.close_group();
+    }
+    for(std::size_t i : members)
+      problem.volume_groups.items.push_back(problem.face_corners[i]);
+    problem.volume_groups.close_group();
+  }
+  return problem;
+}
+
+// Mean edge length of the mesh with vertex positions `points`.
+inline double mean_edge_length(const Tilable_problem& problem, const Point_matrix& points)
+{
+  double sum = 0;
+  for(const auto& e : problem.edges)
+    sum += (points.row(e[0]) - points.row(e[1])).norm();
+  return problem.edges.empty() ? 0.0 : sum / double(problem.edges.size());
+}
+
+// Corner i of face `face` is t_i of its S-quad.
+inline Quad instance(const Tilable_problem& problem, const Point_matrix& points, std::size_t face)
+{
+  Quad q;
+  for(int i = 0; i < 4; ++i)
+    q[i] = points.row(problem.face_corners[face][i]).transpose();
+  return q;
+}
+
+} // namespace internal
+} // namespace Tilable_surfaces
+} // namespace CGAL
+
+#endif // CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_TILABLE_PROBLEM_H

@@ -1,0 +1,179 @@
+// Copyright (c) 2026 Tilable_surfaces contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TILABLE_SURFACES_MEASURE_H
+#define CGAL_TILABLE_SURFACES_MEASURE_H
+
+/// \file measure.h
+/// How tilable a surface is and how far it is from the input: congruence by
+/// rigid fits, distance to the input surface by an AABB tree, the paper's
+/// normalized energy terms, and the S-quad templates (method notes §4, §6).
+/// None of it reads a solver's own energy or bookkeeping.
+
+#include <CGAL/Tilable_surfaces/internal/Measure/approximation.h>
+#include <CGAL/Tilable_surfaces/internal/Measure/congruence.h>
+#include <CGAL/Tilable_surfaces/internal/Optimization/Tilable_problem.h>
+#include <CGAL/Tilable_surfaces/internal/Optimization/energy_terms.h>
+#include <CGAL/Tilable_surfaces/internal/Optimization/fairness_operator.h>
+#include <CGAL/Tilable_surfaces/named_parameters.h>
+#include <CGAL/Tilable_surfaces/validation.h>
+
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <algorithm>
+#include <vector>
+
+namespace CGAL {
+namespace Tilable_surfaces {
+
+/// \ingroup PkgTilableSurfacesRef
+/// Measurements of a (result) surface against the input it was made from.
+struct Tilability_measure
+{
+  /// K, the number of clusters (1 + the largest cluster id).
+  std::size_t number_of_clusters = 0;
+  /// The degree of flexibility of the clustering (`Edge_sharing_graph`).
+  std::size_t degree_of_flexibility = 0;
+  /// The congruence error (method notes §1): the worst cluster's error.
+  double congruence_error = 0;
+  /// Per cluster: the largest corner deviation of an instance from the
+  /// S-quad after the best proper rigid fit of the S-quad onto it, divided
+  /// by `mean_edge_length`.
+  std::vector<double> cluster_congruence_errors;
+  /// Per cluster: its number of instances (faces).
+  std::vector<std::size_t> cluster_sizes;
+  /// Per cluster: the S-quad, the generalized Procrustes mean of its
+  /// instances (each in the template's labelling) under proper rigid motions,
+  /// in mesh units and in a canonical frame: t0 at the origin, t1 on the +x
+  /// axis, t2 in the xy plane with y >= 0. Zeros for a cluster without faces.
+  std::vector<Quad> s_quads;
+  /// Mean edge length of the result, the length scale of the congruence error.
+  double mean_edge_length = 0;
+  /// Bounding-box diagonal of the input, the length scale of the
+  /// approximation error.
+  double input_bbox_diagonal = 0;
+  /// Largest distance from a sample of the result to the input surface,
+  /// divided by `input_bbox_diagonal`. Every quad is taken as the fan of 4
+  /// triangles around its vertex centroid (no preferred diagonal); the samples
+  /// are the vertices and, on each face, the fan's apex, the 4 edge midpoints
+  /// and the centroids of the 4 fan triangles.
+  double max_approximation_error = 0;
+  /// Mean of the same distances over all samples, divided likewise.
+  double mean_approximation_error = 0;
+  /// Largest distance between a vertex of the result and the same vertex of
+  /// the input, in mesh units.
+  double max_displacement = 0;
+  /// Mean of the same distances over the vertices, in mesh units.
+  double mean_displacement = 0;
+  /// The paper's normalized terms (its Table 1): both surfaces scaled by the
+  /// same factor so that the input's largest bounding-box side is 1, then
+  /// F_d / #vertices, F_f / #vertices, F_e / #edges, F_a / #faces and
+  /// F_o / #faces, each term as the paper defines it (cyclic sums, fairness
+  /// of the result with the features of the input).
+  Energy_terms normalized_terms;
+};
+
+namespace internal {
+
+// The measurements on arrays; `D` is the fairness operator of the mesh.
+inline Tilability_measure measure_tilability(const Tilable_problem& problem,
+                                             const Eigen::SparseMatrix<double>& D,
+                                             const Point_matrix& input, const Point_matrix& result)
+{
+  Tilability_measure m;
+  m.number_of_clusters = problem.number_of_clusters;
+  m.degree_of_flexibility = problem.degree_of_flexibility;
+
+  const Cluster_congruence congruence = cluster_congruence(problem, result);
+  m.mean_edge_length = mean_edge_length(problem, result);
+  m.cluster_sizes = congruence.sizes;
+  m.s_quads = congruence.s_quads;
+  for(double e : congruence.errors)
+  {
+    m.cluster_congruence_errors.push_back(e / m.mean_edge_length);
+    m.congruence_error = (std::max)(m.congruence_error, m.cluster_congruence_errors.back());
+  }
+
+  const Eigen::RowVector3d extent = input.colwise().maxCoeff() - input.colwise().minCoeff();
+  m.input_bbox_diagonal = extent.norm();
+  const Distance_summary distance = distance_to_input(problem, input, result);
+  m.max_approximation_error = distance.max / m.input_bbox_diagonal;
+  m.mean_approximation_error = distance.mean / m.input_bbox_diagonal;
+
+  const Eigen::VectorXd displacement = (result - input).rowwise().norm();
+  m.max_displacement = displacement.maxCoeff();
+  m.mean_displacement = displacement.mean();
+
+  const double unit_cube = 1.0 / extent.maxCoeff();
+  const Energy_terms e = paper_energy(problem, D, unit_cube * result, unit_cube * input);
+  const double V = double(problem.number_of_vertices()), E = double(problem.edges.size()),
+               F = double(problem.face_corners.size());
+  m.normalized_terms.distance = e.distance / V;
+  m.normalized_terms.fairness = e.fairness / V;
+  m.normalized_terms.edge_length = e.edge_length / E;
+  m.normalized_terms.diagonal = e.diagonal / F;
+  m.normalized_terms.volume = e.volume / F;
+  return m;
+}
+
+} // namespace internal
+
+/// \ingroup PkgTilableSurfacesRef
+/// Measures how tilable `result` is, given the clustering of its faces, and
+/// how far it is from `input`, a mesh with the same combinatorics whose
+/// vertices correspond to those of `result` by vertex index (e.g. a copy of
+/// the mesh taken before `optimize_tilable_surface()`).
+///
+/// \cgalNamedParamsBegin (for `result`)
+///   \cgalParamNBegin{face_cluster_map} (required) cluster of every face of
+///     `result`, in 0..K-1 \cgalParamNEnd
+///   \cgalParamNBegin{face_orientation_map} (required) orientation (0..7 or
+///     `Quad_orientation`) of every face's S-quad instance \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map} points of `result` \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map} indices pairing the vertices of the
+///     two meshes \cgalParamNEnd
+///   \cgalParamNBegin{feature_angle} dihedral angle in degrees above which an
+///     edge of `input` is a sharp feature, for F_f; default 60 \cgalParamNEnd
+///   \cgalParamNBegin{edge_is_constrained_map} feature edges, replacing the
+///     detection by angle \cgalParamNEnd
+/// \cgalNamedParamsEnd
+/// \cgalNamedParamsBegin (for `input`, `np_input`)
+///   \cgalParamNBegin{vertex_point_map} points of `input` \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map} indices pairing the vertices \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \throws Invalid_input if a mesh is not a valid quad mesh, if the meshes do
+/// not have the same numbers of vertices and faces, or if a cluster or an
+/// orientation is out of range.
+template <typename PolygonMesh, typename NamedParameters, typename InputNamedParameters>
+Tilability_measure measure_tilability(const PolygonMesh& result, const PolygonMesh& input,
+                                      const NamedParameters& np, const InputNamedParameters& np_input)
+{
+  validate_quad_mesh(result, np);
+  validate_quad_mesh(input, np_input);
+  if(num_vertices(result) != num_vertices(input) || num_faces(result) != num_faces(input))
+    throw Invalid_input("the result and the input do not have the same numbers of vertices and faces");
+  const internal::Tilable_problem problem = internal::make_tilable_problem(result, np);
+  const internal::Point_matrix input_points = internal::read_points(
+    input,
+    parameters::choose_parameter(parameters::get_parameter(np_input, CGAL::internal_np::vertex_point),
+                                 get_const_property_map(CGAL::vertex_point, input)),
+    CGAL::get_initialized_vertex_index_map(input, np_input));
+  const Eigen::SparseMatrix<double> D = internal::fairness_operator(result, input_points, np);
+  return internal::measure_tilability(problem, D, input_points, problem.points);
+}
+
+/// \ingroup PkgTilableSurfacesRef
+/// \copydoc measure_tilability(const PolygonMesh&, const PolygonMesh&, const NamedParameters&, const InputNamedParameters&)
+/// The input mesh uses its default property maps.
+template <typename PolygonMesh, typename NamedParameters>
+Tilability_measure measure_tilability(const PolygonMesh& result, const PolygonMesh& input,
+                                      const NamedParameters& np)
+{
+  return measure_tilability(result, input, np, parameters::default_values());
+}
+
+} // namespace Tilable_surfaces
+} // namespace CGAL
+
+#endif // CGAL_TILABLE_SURFACES_MEASURE_H

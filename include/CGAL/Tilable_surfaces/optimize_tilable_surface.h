@@ -1,0 +1,248 @@
+// Copyright (c) 2026 Tilable_surfaces contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TILABLE_SURFACES_OPTIMIZE_TILABLE_SURFACE_H
+#define CGAL_TILABLE_SURFACES_OPTIMIZE_TILABLE_SURFACE_H
+
+/// \file optimize_tilable_surface.h
+/// Moves the vertices of a clustered quad mesh so that the instances of every
+/// cluster become congruent (paper §4, method notes §4 and §4b).
+
+#include <CGAL/Tilable_surfaces/exceptions.h>
+#include <CGAL/Tilable_surfaces/internal/Optimization/Solver_settings.h>
+#include <CGAL/Tilable_surfaces/internal/Optimization/Tilable_problem.h>
+#include <CGAL/Tilable_surfaces/internal/Optimization/conjugate_gradient.h>
+#include <CGAL/Tilable_surfaces/internal/Optimization/constrained_gauss_newton.h>
+#include <CGAL/Tilable_surfaces/internal/Optimization/fairness_operator.h>
+#include <CGAL/Tilable_surfaces/measure.h>
+#include <CGAL/Tilable_surfaces/named_parameters.h>
+#include <CGAL/Tilable_surfaces/validation.h>
+
+#include <CGAL/Real_timer.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+#include <CGAL/property_map.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <cmath>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Tilable_surfaces {
+
+/// \ingroup PkgTilableSurfacesRef
+/// The solvers of `optimize_tilable_surface()`.
+enum Solver_type
+{
+  /// Default. The surface closest to the input in the metric
+  /// mu1 |X - X0|^2 + mu2 |D (X - X0)|^2 (D the fairness operator, applied to
+  /// the displacement), subject to equal edge lengths per edge-sharing
+  /// component and equal diagonals and signed volume per cluster as *hard*
+  /// constraints: Gauss-Newton SQP steps on the regularized sparse KKT system
+  /// with multiplier updates and a line search on the augmented Lagrangian.
+  /// Only the ratio mu2 / mu1 matters; mu3..mu5 are not used.
+  CONSTRAINED_GAUSS_NEWTON,
+  /// The paper's method, as a reference: Polak-Ribiere nonlinear conjugate
+  /// gradient on the weighted sum mu1 F_d + mu2 F_f + mu3 F_e + mu4 F_a +
+  /// mu5 F_o of the paper's terms, on the input normalized to a unit
+  /// bounding-box diagonal. It stops when the energy stalls, congruent or not.
+  PAPER_CONJUGATE_GRADIENT
+};
+
+/// \ingroup PkgTilableSurfacesRef
+/// The visitor of `optimize_tilable_surface()` that does nothing; derive from
+/// it, or write a class with the same member, to follow or stop the solver.
+struct Default_optimization_visitor
+{
+  /// Called after iteration `iteration` (from 1) with the congruence error
+  /// measured at that iteration (method notes §1) and the solver's objective
+  /// (on the normalized input). Returning `false` stops the solver.
+  bool iteration(int /*iteration*/, double /*congruence_error*/, double /*objective*/)
+  {
+    return true;
+  }
+};
+
+/// \ingroup PkgTilableSurfacesRef
+/// What `optimize_tilable_surface()` did and what it achieved.
+struct Optimization_result
+{
+  /// Iterations performed.
+  int iterations = 0;
+  /// Whether the *measured* congruence error (`measure.congruence_error`)
+  /// is at most `congruence_tolerance`; never set from the solver's energy.
+  bool converged = false;
+  /// The paper's five terms at the result, on positions normalized like the
+  /// solver's (centred, unit bounding-box diagonal of the input).
+  Energy_terms energy;
+  /// The solver's own objective at the end (see `Solver_type`).
+  double objective = 0;
+  /// Seconds spent checking the input and setting the problem up.
+  double setup_time = 0;
+  /// Seconds spent in the solver.
+  double solve_time = 0;
+  /// Seconds spent measuring the result.
+  double measure_time = 0;
+  /// The measurements of the result against the input (`measure_tilability()`).
+  Tilability_measure measure;
+};
+
+namespace internal {
+
+inline void check_parameter(bool ok, const std::string& what)
+{
+  if(!ok)
+    throw Invalid_input("invalid parameter: " + what, Invalid_input::PARAMETER);
+}
+
+} // namespace internal
+
+/// \ingroup PkgTilableSurfacesRef
+/// Moves the vertices of `pm` so that it becomes tilable by the S-quads of
+/// the clustering given in `np`: the instances of each cluster congruent up to
+/// proper rigid motions, within `congruence_tolerance` (method notes §1).
+///
+/// The input is checked first (`validate_quad_mesh()`, cluster ids and
+/// orientations) and nothing is modified when it is refused. The solvers work
+/// on a copy of the points centred and scaled to a unit bounding-box
+/// diagonal, so the result commutes with similarities of the input and every
+/// tolerance is relative. Only the vertices that moved are written back, as
+/// their input position plus the displacement: a vertex that does not move
+/// keeps its exact coordinates, and constrained vertices are never written.
+///
+/// \tparam PolygonMesh a model of `FaceListGraph` and `MutableFaceGraph`
+///   whose faces are quads.
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{face_cluster_map} (required) cluster of every face,
+///     0..K-1; K = 1 + the largest id \cgalParamNEnd
+///   \cgalParamNBegin{face_orientation_map} (required) orientation of every
+///     face's instance, 0..7 or `Quad_orientation` (see `quad_shape.h`) \cgalParamNEnd
+///   \cgalParamNBegin{solver} a `Solver_type`; default `CONSTRAINED_GAUSS_NEWTON` \cgalParamNEnd
+///   \cgalParamNBegin{distance_weight} mu1, default 1e-4 (must be > 0 for the
+///     default solver) \cgalParamNEnd
+///   \cgalParamNBegin{fairness_weight} mu2, default 1e-4 \cgalParamNEnd
+///   \cgalParamNBegin{edge_length_weight} mu3, default 1 (conjugate gradient only) \cgalParamNEnd
+///   \cgalParamNBegin{diagonal_weight} mu4, default 1 (conjugate gradient only) \cgalParamNEnd
+///   \cgalParamNBegin{volume_weight} mu5, default 1 (conjugate gradient only) \cgalParamNEnd
+///   \cgalParamNBegin{congruence_tolerance} target congruence error, default 1e-6 \cgalParamNEnd
+///   \cgalParamNBegin{convergence_tolerance} Gauss-Newton: stop once congruent
+///     and the largest step is below this fraction of the mean edge length,
+///     default 1e-9; conjugate gradient: stop when the relative decrease of
+///     the energy is below it, default 1e-12 \cgalParamNEnd
+///   \cgalParamNBegin{number_of_iterations} at most this many iterations,
+///     default 100 (Gauss-Newton) or 5000 (conjugate gradient) \cgalParamNEnd
+///   \cgalParamNBegin{feature_angle} dihedral angle in degrees above which an
+///     edge is a sharp feature left out of the fairness term, default 60 \cgalParamNEnd
+///   \cgalParamNBegin{edge_is_constrained_map} feature edges, replacing the
+///     detection by angle \cgalParamNEnd
+///   \cgalParamNBegin{vertex_is_constrained_map} vertices that must not move \cgalParamNEnd
+///   \cgalParamNBegin{visitor} a model of `Default_optimization_visitor`'s
+///     interface, copied \cgalParamNEnd
+///   \cgalParamNBegin{vertex_point_map} the points of the vertices \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map}, \cgalParamNBegin{face_index_map}
+///     indices, for messages and internal arrays \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \returns the iterations, whether the measured congruence error reached the
+///   tolerance, the energy terms, timings and the full `Tilability_measure`.
+///   When the constraints cannot be met (the solver stagnates), `converged`
+///   is `false` and the measure says how far the result is.
+/// \throws Invalid_input for an invalid mesh, clustering or parameter.
+template <class PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
+Optimization_result optimize_tilable_surface(PolygonMesh& pm, const CGAL_NP_CLASS& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  namespace TS_np = CGAL::Tilable_surfaces::internal_np;
+  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename GetVertexPointMap<PolygonMesh, CGAL_NP_CLASS>::type VertexPointMap;
+  typedef typename boost::property_traits<VertexPointMap>::value_type Point;
+  typedef typename CGAL::internal_np::Lookup_named_param_def<
+    CGAL::internal_np::visitor_t, CGAL_NP_CLASS, Default_optimization_visitor>::type Visitor;
+
+  Optimization_result result;
+  CGAL::Real_timer timer;
+  timer.start();
+
+  validate_quad_mesh(pm, np);
+  const internal::Tilable_problem problem = internal::make_tilable_problem(pm, np);
+
+  const Solver_type solver = choose_parameter(get_parameter(np, TS_np::solver), CONSTRAINED_GAUSS_NEWTON);
+  const bool gauss_newton = (solver == CONSTRAINED_GAUSS_NEWTON);
+  internal::Solver_settings settings;
+  settings.weights.distance = choose_parameter(get_parameter(np, TS_np::distance_weight), 1e-4);
+  settings.weights.fairness = choose_parameter(get_parameter(np, TS_np::fairness_weight), 1e-4);
+  settings.weights.edge_length = choose_parameter(get_parameter(np, TS_np::edge_length_weight), 1.0);
+  settings.weights.diagonal = choose_parameter(get_parameter(np, TS_np::diagonal_weight), 1.0);
+  settings.weights.volume = choose_parameter(get_parameter(np, TS_np::volume_weight), 1.0);
+  settings.congruence_tolerance = choose_parameter(get_parameter(np, TS_np::congruence_tolerance), 1e-6);
+  settings.convergence_tolerance =
+    choose_parameter(get_parameter(np, TS_np::convergence_tolerance), gauss_newton ? 1e-9 : 1e-12);
+  settings.max_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
+                                             gauss_newton ? 100 : 5000);
+
+  internal::check_parameter(solver == CONSTRAINED_GAUSS_NEWTON || solver == PAPER_CONJUGATE_GRADIENT,
+                            "unknown solver");
+  const Energy_terms& w = settings.weights;
+  for(double mu : {w.distance, w.fairness, w.edge_length, w.diagonal, w.volume})
+    internal::check_parameter(std::isfinite(mu) && mu >= 0, "the weights must be finite and >= 0");
+  internal::check_parameter(!gauss_newton || w.distance > 0,
+                            "distance_weight must be > 0 for the constrained solver");
+  internal::check_parameter(settings.congruence_tolerance > 0 && settings.convergence_tolerance >= 0,
+                            "the tolerances must be > 0");
+  internal::check_parameter(settings.max_iterations >= 0, "number_of_iterations must be >= 0");
+
+  const auto vim = CGAL::get_initialized_vertex_index_map(pm, np);
+  const auto vcm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_is_constrained),
+                                    CGAL::Static_boolean_property_map<vertex_descriptor, false>());
+  std::vector<bool> fixed(problem.number_of_vertices(), false);
+  for(vertex_descriptor v : vertices(pm))
+    fixed[get(vim, v)] = get(vcm, v);
+
+  // Similarity normalization: centre of the bounding box, unit diagonal.
+  const Eigen::RowVector3d lo = problem.points.colwise().minCoeff();
+  const Eigen::RowVector3d hi = problem.points.colwise().maxCoeff();
+  const Eigen::RowVector3d centre = 0.5 * (lo + hi);
+  const double scale = (hi - lo).norm();
+  const internal::Point_matrix X0 = (problem.points.rowwise() - centre) / scale;
+  const Eigen::SparseMatrix<double> D = internal::fairness_operator(pm, problem.points, np);
+  const internal::Solver_input input{problem, D, X0, fixed};
+  result.setup_time = timer.time();
+
+  timer.reset();
+  Visitor visitor = choose_parameter<Visitor>(get_parameter(np, CGAL::internal_np::visitor));
+  internal::Point_matrix X;
+  const internal::Solver_report report =
+    gauss_newton ? internal::constrained_gauss_newton(input, settings, X, visitor)
+                 : internal::polak_ribiere(input, settings, X, visitor);
+  result.iterations = report.iterations;
+  result.objective = report.objective;
+  result.energy = internal::paper_energy(problem, D, X, X0);
+
+  VertexPointMap vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                        get_property_map(CGAL::vertex_point, pm));
+  internal::Point_matrix moved = problem.points;
+  for(vertex_descriptor v : vertices(pm))
+  {
+    const std::size_t i = get(vim, v);
+    const Eigen::RowVector3d displacement = X.row(i) - X0.row(i);
+    if(fixed[i] || displacement.isZero(0))
+      continue;
+    moved.row(i) += scale * displacement;
+    put(vpm, v, Point(moved(i, 0), moved(i, 1), moved(i, 2)));
+  }
+  result.solve_time = timer.time();
+
+  timer.reset();
+  result.measure = internal::measure_tilability(problem, D, problem.points, moved);
+  result.converged = result.measure.congruence_error <= settings.congruence_tolerance;
+  result.measure_time = timer.time();
+  return result;
+}
+
+} // namespace Tilable_surfaces
+} // namespace CGAL
+
+#endif // CGAL_TILABLE_SURFACES_OPTIMIZE_TILABLE_SURFACE_H

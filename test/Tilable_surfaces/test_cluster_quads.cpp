@@ -1,0 +1,452 @@
+// Clustering into S-quads and interactive editing: facts checked by
+// construction, by symmetry and by an independent brute-force count.
+#include <CGAL/Tilable_surfaces/cluster_editing.h>
+#include <CGAL/Tilable_surfaces/cluster_quads.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/fast_match.h>
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <gtest/gtest.h>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
+#include <cmath>
+#include <map>
+#include <queue>
+#include <random>
+#include <set>
+#include <string>
+#include <vector>
+
+namespace TS = CGAL::Tilable_surfaces;
+typedef CGAL::Simple_cartesian<double> Kernel;
+typedef Kernel::Point_3 Point;
+typedef CGAL::Surface_mesh<Point> Mesh;
+typedef Mesh::Face_index Face;
+
+namespace {
+
+Mesh read(const std::string& name)
+{
+  Mesh m;
+  const std::string path = std::string(CGAL_TILABLE_SURFACES_TEST_DATA) + "/" + name + ".off";
+  if(!CGAL::IO::read_polygon_mesh(path, m))
+    ADD_FAILURE() << "cannot read " << path;
+  return m;
+}
+
+// nx x ny grid of w x h rectangles in z = 0 (see test_edge_sharing_graph.cpp).
+Mesh grid(int nx, int ny, double w = 2, double h = 1)
+{
+  Mesh m;
+  std::vector<Mesh::Vertex_index> v;
+  for(int j = 0; j <= ny; ++j)
+    for(int i = 0; i <= nx; ++i)
+      v.push_back(m.add_vertex(Point(w * i, h * j, 0)));
+  auto id = [&](int i, int j) { return v[i + (nx + 1) * j]; };
+  for(int j = 0; j < ny; ++j)
+    for(int i = 0; i < nx; ++i)
+      m.add_face(id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+  return m;
+}
+
+struct Maps
+{
+  Mesh::Property_map<Face, std::size_t> cluster;
+  Mesh::Property_map<Face, int> orientation;
+};
+
+Maps maps(Mesh& m)
+{
+  return Maps{m.add_property_map<Face, std::size_t>("f:cluster", 0).first,
+              m.add_property_map<Face, int>("f:orientation", 0).first};
+}
+
+TS::Clustering_result cluster(Mesh& m, const Maps& mp, std::size_t k,
+                              TS::Clustering_path path = TS::AUTOMATIC_PATH)
+{
+  return TS::cluster_quads(m, TS::parameters::number_of_tiles(k)
+                                .face_cluster_map(mp.cluster)
+                                .face_orientation_map(mp.orientation)
+                                .clustering_path(path));
+}
+
+// Degree of flexibility from scratch: nodes (c, k); for every interior mesh
+// edge, the template edge of each side (found by walking the face from
+// halfedge(f)), joined unless equal; connected components by BFS.
+std::size_t brute_force_dof(const Mesh& m, const Maps& mp, std::size_t k)
+{
+  auto node = [&](Mesh::Halfedge_index h) {
+    const Face f = m.face(h);
+    Mesh::Halfedge_index g = m.halfedge(f);
+    int j = 0;
+    for(g = m.next(g); g != h; g = m.next(g)) ++j;  // h is face edge j
+    const TS::Quad_orientation o(mp.orientation[f]);
+    return 4 * mp.cluster[f] + std::size_t(o.template_edge(j));
+  };
+  std::vector<std::vector<std::size_t> > adjacent(4 * k);
+  for(auto e : m.edges())
+  {
+    if(m.is_border(e)) continue;
+    const std::size_t a = node(m.halfedge(e, 0)), b = node(m.halfedge(e, 1));
+    if(a == b) continue;
+    adjacent[a].push_back(b);
+    adjacent[b].push_back(a);
+  }
+  std::vector<bool> seen(4 * k, false);
+  std::size_t components = 0;
+  for(std::size_t s = 0; s < 4 * k; ++s)
+  {
+    if(seen[s]) continue;
+    ++components;
+    std::queue<std::size_t> todo;
+    todo.push(s);
+    seen[s] = true;
+    while(!todo.empty())
+    {
+      const std::size_t x = todo.front();
+      todo.pop();
+      for(std::size_t y : adjacent[x])
+        if(!seen[y]) { seen[y] = true; todo.push(y); }
+    }
+  }
+  return components;
+}
+
+std::size_t number_of_clusters(const Mesh& m, const Maps& mp)
+{
+  std::set<std::size_t> ids;
+  for(Face f : faces(m)) ids.insert(mp.cluster[f]);
+  EXPECT_EQ(*ids.rbegin() + 1, ids.size()) << "ids are not contiguous";
+  return ids.size();
+}
+
+// Every face's orientation minimises the dissimilarity to its S-quad.
+void expect_best_orientations(const Mesh& m, const Maps& mp, const TS::Clustering_result& r)
+{
+  const double scale = TS::mean_edge_length(m);
+  for(Face f : faces(m))
+  {
+    const TS::Quad& s = r.s_quads[mp.cluster[f]];
+    const TS::Quad q = TS::face_quad(f, m);
+    // Best over the 8 correspondences (quad_shape.h's reference implementation)
+    // against the sum of corner distances under the tagged correspondence.
+    const double best = TS::best_match(s, q).dissimilarity;
+    const TS::Quad t = TS::reoriented(q, TS::Quad_orientation(mp.orientation[f]));
+    const TS::Rigid_fit fit = TS::best_rigid_fit(s, t);
+    double tagged = 0;
+    for(int i = 0; i < 4; ++i) tagged += (t[i] - fit(s[i])).norm();
+    EXPECT_LE(tagged, best + 1e-9 * scale) << "face " << int(f);
+  }
+}
+
+} // namespace
+
+TEST(FastMatch, SameAsBestMatch)
+{
+  std::mt19937 rng(3);
+  std::uniform_real_distribution<double> u(-1, 1);
+  auto random_quad = [&] {
+    TS::Quad q;
+    for(auto& p : q) p = Eigen::Vector3d(u(rng), u(rng), u(rng));
+    return q;
+  };
+  for(TS::Orientation_policy policy :
+      {TS::PROPER_RIGID_MOTIONS, TS::NO_TURNED_OVER_PANELS, TS::ALLOW_MIRRORED_PANELS})
+    for(int i = 0; i < 300; ++i)
+    {
+      const TS::Quad p = random_quad(), q = random_quad();
+      const TS::Quad_match a = TS::best_match(p, q, policy);
+      const TS::Quad_match b = TS::internal::fast_best_match(p, q, policy);
+      EXPECT_NEAR(a.dissimilarity, b.dissimilarity, 1e-12);
+      EXPECT_EQ(a.orientation, b.orientation);
+      EXPECT_TRUE(a.fit.rotation.isApprox(b.fit.rotation, 1e-9));
+    }
+}
+
+TEST(ClusterQuads, FlatGridOfEqualRectanglesIsOneCluster)
+{
+  Mesh m = grid(6, 4);
+  Maps mp = maps(m);
+  const TS::Clustering_result r = cluster(m, mp, 1);
+  EXPECT_EQ(number_of_clusters(m, mp), 1u);
+  ASSERT_EQ(r.cluster_sizes.size(), 1u);
+  EXPECT_EQ(r.cluster_sizes[0], 24u);
+  // The threshold clustering already finds a single shape.
+  EXPECT_EQ(r.number_of_initial_clusters, 1u);
+  EXPECT_EQ(r.degree_of_flexibility, 2u);
+  EXPECT_EQ(brute_force_dof(m, mp, 1), 2u);
+  EXPECT_NEAR(r.total_weight, 0.0, 1e-9);
+  // The S-quad is the 2 x 1 rectangle.
+  const auto e = TS::edge_lengths(r.s_quads[0]);
+  std::vector<double> sorted(e.begin(), e.end());
+  std::sort(sorted.begin(), sorted.end());
+  EXPECT_NEAR(sorted[0], 1.0, 1e-9);
+  EXPECT_NEAR(sorted[3], 2.0, 1e-9);
+}
+
+TEST(ClusterQuads, CongruentQuadsAreSplitWhenKExceedsTheShapes)
+{
+  Mesh m = grid(4, 3);
+  Maps mp = maps(m);
+  const TS::Clustering_result r = cluster(m, mp, 5);
+  EXPECT_EQ(number_of_clusters(m, mp), 5u);
+  EXPECT_EQ(r.degree_of_flexibility, brute_force_dof(m, mp, 5));
+}
+
+TEST(ClusterQuads, ErrorsLeaveTheMapsUntouched)
+{
+  Mesh m = read("de_beers_ginza");
+  Maps mp = maps(m);
+  for(Face f : faces(m)) { mp.cluster[f] = 77; mp.orientation[f] = 5; }
+  EXPECT_THROW(cluster(m, mp, 0), TS::Invalid_input);
+  EXPECT_THROW(cluster(m, mp, m.number_of_faces() + 1), TS::Invalid_input);
+  Mesh mixed = read("mushroom");
+  Maps mixed_maps = maps(mixed);
+  for(Face f : faces(mixed)) mixed_maps.cluster[f] = 77;
+  EXPECT_THROW(cluster(mixed, mixed_maps, 3), TS::Invalid_input);
+  for(Face f : faces(m)) { EXPECT_EQ(mp.cluster[f], 77u); EXPECT_EQ(mp.orientation[f], 5); }
+  for(Face f : faces(mixed)) EXPECT_EQ(mixed_maps.cluster[f], 77u);
+}
+
+TEST(ClusterQuads, KEqualsNumberOfFaces)
+{
+  Mesh m = read("de_beers_ginza");
+  Maps mp = maps(m);
+  cluster(m, mp, m.number_of_faces());
+  EXPECT_EQ(number_of_clusters(m, mp), m.number_of_faces());
+}
+
+// The paper's surfaces and K values (Table 1); DOFs are printed next to the
+// paper's for the record, not asserted (the meshes are stand-ins).
+struct Paper_case { const char* surface; std::vector<std::size_t> ks; };
+
+class PaperSurfaces : public ::testing::TestWithParam<Paper_case> {};
+
+TEST_P(PaperSurfaces, ExactlyKClustersWithBestOrientations)
+{
+  Mesh m = read(GetParam().surface);
+  Maps mp = maps(m);
+  for(std::size_t k : GetParam().ks)
+  {
+    const TS::Clustering_result r = cluster(m, mp, k);
+    EXPECT_EQ(number_of_clusters(m, mp), k);
+    ASSERT_EQ(r.cluster_sizes.size(), k);
+    for(std::size_t s : r.cluster_sizes) EXPECT_GT(s, 0u);
+    EXPECT_EQ(r.degree_of_flexibility, brute_force_dof(m, mp, k));
+    expect_best_orientations(m, mp, r);
+    std::cout << "[ DOF      ] " << GetParam().surface << " K=" << k << " DOF="
+              << r.degree_of_flexibility << " (N=" << r.number_of_initial_clusters << ", "
+              << r.choice_reason << ")" << std::endl;
+  }
+}
+
+INSTANTIATE_TEST_SUITE_P(
+  Table1, PaperSurfaces,
+  ::testing::Values(Paper_case{"swiss_re", {24, 18, 9}}, Paper_case{"tunnel", {12, 8}},
+                    Paper_case{"seashell", {96, 60, 44, 21}},
+                    Paper_case{"decocube", {21, 15, 9}}, Paper_case{"monkey_saddle", {24, 3, 1}},
+                    Paper_case{"de_beers_ginza", {48, 44, 39, 34, 30, 27, 28, 22, 16}}),
+  [](const ::testing::TestParamInfo<Paper_case>& i) { return std::string(i.param.surface); });
+
+// The face whose centroid is nearest to `p`.
+Face nearest_face(const Mesh& m, const Eigen::Vector3d& p)
+{
+  Face best;
+  double best_d = std::numeric_limits<double>::max();
+  for(Face f : faces(m))
+  {
+    const TS::Quad q = TS::face_quad(f, m);
+    const double d = (0.25 * (q[0] + q[1] + q[2] + q[3]) - p).norm();
+    if(d < best_d) { best_d = d; best = f; }
+  }
+  return best;
+}
+
+void expect_rotation_invariant(const char* surface, std::size_t k, const Eigen::Matrix3d& rotation)
+{
+  Mesh m = read(surface);
+  Maps mp = maps(m);
+  cluster(m, mp, k);
+  for(Face f : faces(m))
+  {
+    const TS::Quad q = TS::face_quad(f, m);
+    const Face g = nearest_face(m, rotation * (0.25 * (q[0] + q[1] + q[2] + q[3])));
+    EXPECT_EQ(mp.cluster[f], mp.cluster[g]) << surface << ": faces " << int(f) << ", " << int(g);
+  }
+}
+
+TEST(ClusterQuads, TunnelSymmetricQuadsShareClusters)
+{
+  // P = (s, r cos t, r sin t) with r periodic of period 60 degrees in t:
+  // rotation by 60 degrees about x maps the mesh onto itself.
+  expect_rotation_invariant("tunnel", 10,
+    Eigen::AngleAxisd(M_PI / 3, Eigen::Vector3d::UnitX()).toRotationMatrix());
+}
+
+TEST(ClusterQuads, TowerSymmetricQuadsShareClusters)
+{
+  // 24 vertices per level, levels alternately shifted by half a step: the
+  // rotation by 2 pi / 24 about the axis z maps the mesh onto itself.
+  expect_rotation_invariant("swiss_re", 18,
+    Eigen::AngleAxisd(2 * M_PI / 24, Eigen::Vector3d::UnitZ()).toRotationMatrix());
+}
+
+// The exact weight of the labelling in the maps: sum of pairwise dissimilarities.
+double exact_weight(const Mesh& m, const Maps& mp)
+{
+  std::vector<Face> f(faces(m).begin(), faces(m).end());
+  double w = 0;
+  for(std::size_t i = 0; i < f.size(); ++i)
+    for(std::size_t j = i + 1; j < f.size(); ++j)
+      if(mp.cluster[f[i]] == mp.cluster[f[j]])
+        w += TS::internal::fast_best_match(TS::face_quad(f[i], m), TS::face_quad(f[j], m)).dissimilarity;
+  return w;
+}
+
+TEST(ClusterQuads, DescriptorPathAgreesWithExactPath)
+{
+  for(const char* surface : {"seashell", "decocube", "de_beers_ginza"})
+  {
+    Mesh m = read(surface);
+    Maps exact_maps = maps(m);
+    const TS::Clustering_result exact = cluster(m, exact_maps, 20, TS::EXACT_PATH);
+    const double exact_w = exact_weight(m, exact_maps);
+    EXPECT_TRUE(exact.weights_are_exact);
+    EXPECT_NEAR(exact.total_weight, exact_w, 1e-9 * exact_w);
+
+    Mesh m2 = read(surface);
+    Maps descriptor_maps = maps(m2);
+    const TS::Clustering_result descriptor = cluster(m2, descriptor_maps, 20, TS::DESCRIPTOR_PATH);
+    EXPECT_EQ(descriptor.path, TS::DESCRIPTOR_PATH);
+    EXPECT_FALSE(descriptor.weights_are_exact);
+    EXPECT_EQ(number_of_clusters(m2, descriptor_maps), 20u);
+    // The kd-tree prefilter is exact: same threshold clustering.
+    EXPECT_EQ(descriptor.number_of_initial_clusters, exact.number_of_initial_clusters);
+    // The estimate bounds the true weight from above, within a factor 2.
+    const double descriptor_w = exact_weight(m2, descriptor_maps);
+    EXPECT_GE(descriptor.total_weight, descriptor_w * (1 - 1e-9)) << surface;
+    EXPECT_LE(descriptor.total_weight, 2 * descriptor_w) << surface;
+    // Both clusterings are of comparable quality.
+    EXPECT_LT(descriptor_w, 3 * exact_w) << surface;
+    EXPECT_LT(exact_w, 3 * descriptor_w) << surface;
+    std::cout << "[ WEIGHT   ] " << surface << " K=20 exact path " << exact_w << " (DOF "
+              << exact.degree_of_flexibility << "), descriptor path " << descriptor_w
+              << " (estimate " << descriptor.total_weight << ", DOF "
+              << descriptor.degree_of_flexibility << ")" << std::endl;
+  }
+}
+
+TEST(ClusterQuads, DeterministicWhateverTheThreads)
+{
+  Mesh m = read("seashell");
+  std::vector<std::vector<std::size_t> > results;
+  for(int threads : {1, 2})
+  {
+#ifdef CGAL_LINKED_WITH_TBB
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, threads);
+#endif
+    for(TS::Clustering_path path : {TS::EXACT_PATH, TS::DESCRIPTOR_PATH})
+    {
+      Maps mp = maps(m);
+      cluster(m, mp, 30, path);
+      std::vector<std::size_t> labels;
+      for(Face f : faces(m)) labels.push_back(mp.cluster[f] * 8 + std::size_t(mp.orientation[f]));
+      results.push_back(labels);
+    }
+  }
+  EXPECT_EQ(results[0], results[2]);
+  EXPECT_EQ(results[1], results[3]);
+}
+
+TEST(ClusterEditing, MergesAndSplitsAgreeWithBruteForce)
+{
+  Mesh m = read("de_beers_ginza");
+  Maps mp = maps(m);
+  cluster(m, mp, 16);
+  auto np = TS::parameters::face_cluster_map(mp.cluster).face_orientation_map(mp.orientation);
+  std::size_t k = 16;
+
+  std::size_t dof = TS::merge_clusters(m, 3, 1, np);
+  --k;
+  EXPECT_EQ(number_of_clusters(m, mp), k);
+  EXPECT_EQ(dof, brute_force_dof(m, mp, k));
+
+  dof = TS::merge_clusters(m, 0, k - 1, np);
+  --k;
+  EXPECT_EQ(number_of_clusters(m, mp), k);
+  EXPECT_EQ(dof, brute_force_dof(m, mp, k));
+
+  std::size_t first_of_zero = m.number_of_faces();
+  for(Face f : faces(m)) if(mp.cluster[f] == 0) { first_of_zero = std::size_t(f); break; }
+  dof = TS::split_cluster(m, 0, np);
+  ++k;
+  EXPECT_EQ(number_of_clusters(m, mp), k);
+  EXPECT_EQ(dof, brute_force_dof(m, mp, k));
+  EXPECT_EQ(mp.cluster[Face(Mesh::size_type(first_of_zero))], 0u);
+
+  dof = TS::split_cluster(m, 2, np);
+  ++k;
+  EXPECT_EQ(dof, brute_force_dof(m, mp, k));
+  dof = TS::merge_clusters(m, 2, 5, np);
+  --k;
+  EXPECT_EQ(dof, brute_force_dof(m, mp, k));
+  dof = TS::retag_orientations(m, np);
+  EXPECT_EQ(number_of_clusters(m, mp), k);
+  EXPECT_EQ(dof, brute_force_dof(m, mp, k));
+}
+
+TEST(ClusterEditing, MergeKeepsInstancesAndLowersNoDofAfterSameShapeMerge)
+{
+  // Quadrants of a flat grid of equal rectangles, orientation 0 everywhere:
+  // merging two quadrant clusters of the same shape keeps template edges 0/2
+  // and 1/3 apart; DOF can only decrease on a merge.
+  Mesh m = grid(4, 4);
+  Maps mp = maps(m);
+  for(Face f : faces(m)) mp.cluster[f] = (int(f) % 4) / 2 + 2 * ((int(f) / 4) / 2);
+  auto np = TS::parameters::face_cluster_map(mp.cluster).face_orientation_map(mp.orientation);
+  EXPECT_EQ(brute_force_dof(m, mp, 4), 4u);
+  const std::size_t dof = TS::merge_clusters(m, 0, 3, np);
+  EXPECT_LE(dof, 4u);
+  EXPECT_GE(dof, 2u);
+  EXPECT_EQ(dof, brute_force_dof(m, mp, 3));
+}
+
+TEST(ClusterEditing, Errors)
+{
+  Mesh m = grid(2, 2);
+  Maps mp = maps(m);
+  for(Face f : faces(m)) mp.cluster[f] = std::size_t(f);
+  auto np = TS::parameters::face_cluster_map(mp.cluster).face_orientation_map(mp.orientation);
+  EXPECT_THROW(TS::merge_clusters(m, 1, 1, np), TS::Invalid_input);
+  EXPECT_THROW(TS::merge_clusters(m, 0, 4, np), TS::Invalid_input);
+  EXPECT_THROW(TS::split_cluster(m, 0, np), TS::Invalid_input);  // a single face
+  for(Face f : faces(m)) EXPECT_EQ(mp.cluster[f], std::size_t(f));
+}
+
+TEST(ClusterQuads, DescriptorPathOnALargerGrid)
+{
+  // A monkey saddle z = x^3 - 3 x y^2 on a 100 x 100 grid: 10,000 quads.
+  const int n = 100;
+  Mesh m;
+  std::vector<Mesh::Vertex_index> v;
+  for(int j = 0; j <= n; ++j)
+    for(int i = 0; i <= n; ++i)
+    {
+      const double x = -1 + 2.0 * i / n, y = -1 + 2.0 * j / n;
+      v.push_back(m.add_vertex(Point(x, y, x * x * x - 3 * x * y * y)));
+    }
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i)
+      m.add_face(v[i + (n + 1) * j], v[i + 1 + (n + 1) * j], v[i + 1 + (n + 1) * (j + 1)],
+                 v[i + (n + 1) * (j + 1)]);
+  Maps mp = maps(m);
+  const TS::Clustering_result r = cluster(m, mp, 50);
+  EXPECT_EQ(r.path, TS::DESCRIPTOR_PATH);
+  EXPECT_EQ(number_of_clusters(m, mp), 50u);
+  EXPECT_EQ(r.degree_of_flexibility, brute_force_dof(m, mp, 50));
+}

@@ -1,0 +1,162 @@
+// Edge-sharing graph: degrees of flexibility counted by hand on small grids.
+#include <CGAL/Tilable_surfaces/Edge_sharing_graph.h>
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <gtest/gtest.h>
+
+#include <functional>
+#include <vector>
+
+namespace TS = CGAL::Tilable_surfaces;
+typedef CGAL::Simple_cartesian<double> Kernel;
+typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
+typedef Mesh::Face_index Face;
+
+namespace {
+
+// nx x ny grid of w x h rectangles in the plane z = 0. Face (i, j) is added
+// with vertices (i,j), (i+1,j), (i+1,j+1), (i,j+1): its edge 0 and 2 are
+// horizontal (length w), 1 and 3 vertical (length h). Faces are numbered
+// i + nx * j.
+Mesh grid(int nx, int ny, double w = 2, double h = 1)
+{
+  Mesh m;
+  std::vector<Mesh::Vertex_index> v;
+  for(int j = 0; j <= ny; ++j)
+    for(int i = 0; i <= nx; ++i)
+      v.push_back(m.add_vertex(Kernel::Point_3(w * i, h * j, 0)));
+  auto id = [&](int i, int j) { return v[i + (nx + 1) * j]; };
+  for(int j = 0; j < ny; ++j)
+    for(int i = 0; i < nx; ++i)
+      m.add_face(id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+  return m;
+}
+
+struct Labelling
+{
+  Mesh::Property_map<Face, int> cluster, orientation;
+};
+
+Labelling label(Mesh& m, const std::function<int(int)>& cluster,
+                const std::function<int(int)>& orientation = [](int) { return 0; })
+{
+  Labelling l{m.add_property_map<Face, int>("f:c", 0).first,
+              m.add_property_map<Face, int>("f:o", 0).first};
+  for(Face f : faces(m))
+  {
+    l.cluster[f] = cluster(int(f));
+    l.orientation[f] = orientation(int(f));
+  }
+  return l;
+}
+
+} // namespace
+
+TEST(EdgeSharingGraph, FlatGridOneClusterHasTwoLengths)
+{
+  // All faces oriented alike: shared vertical edges link template edges 1 and
+  // 3, shared horizontal ones link 0 and 2: components {0, 2} and {1, 3}.
+  Mesh m = grid(5, 3);
+  Labelling l = label(m, [](int) { return 0; });
+  TS::Edge_sharing_graph<Mesh> g(m, 1, l.cluster, l.orientation);
+  EXPECT_EQ(g.degree_of_flexibility(), 2u);
+  EXPECT_EQ(g.component(0, 0), g.component(0, 2));
+  EXPECT_EQ(g.component(0, 1), g.component(0, 3));
+  EXPECT_NE(g.component(0, 0), g.component(0, 1));
+}
+
+TEST(EdgeSharingGraph, BoundaryEdgesAddNoLink)
+{
+  // A single face: only boundary edges, so the 4 S-quad edges stay apart.
+  Mesh m = grid(1, 1);
+  Labelling l = label(m, [](int) { return 0; });
+  TS::Edge_sharing_graph<Mesh> g(m, 1, l.cluster, l.orientation);
+  EXPECT_EQ(g.degree_of_flexibility(), 4u);
+}
+
+TEST(EdgeSharingGraph, SelfLoopsAreIgnored)
+{
+  // Two faces side by side in one cluster; the right one has orientation 2,
+  // so its face edge 3 (the shared edge) is template edge (3 - 2) = 1, the
+  // same node as the left face's edge 1: a self-loop, no constraint.
+  Mesh m = grid(2, 1);
+  Labelling l = label(m, [](int) { return 0; }, [](int f) { return f == 1 ? 2 : 0; });
+  TS::Edge_sharing_graph<Mesh> g(m, 1, l.cluster, l.orientation);
+  EXPECT_EQ(g.degree_of_flexibility(), 4u);
+}
+
+TEST(EdgeSharingGraph, FourByFourPeriodicLabellingCountedByHand)
+{
+  // Face (i, j) in cluster c = (i mod 2) + 2 (j mod 2), orientation 0.
+  // Vertical interior edges between columns i and i+1 link (c(i,j), 1) with
+  // (c(i+1,j), 3); both parities of i occur (i = 0, 1, 2), so for each row
+  // parity b: (2b,1)~(2b+1,3) and (2b+1,1)~(2b,3): 4 components of vertical
+  // edges. Likewise horizontal edges, for each column parity a:
+  // (a,2)~(a+2,0) and (a+2,2)~(a,0): 4 components. DOF = 8.
+  Mesh m = grid(4, 4);
+  Labelling l = label(m, [](int f) { return (f % 4) % 2 + 2 * ((f / 4) % 2); });
+  TS::Edge_sharing_graph<Mesh> g(m, 4, l.cluster, l.orientation);
+  EXPECT_EQ(g.degree_of_flexibility(), 8u);
+  EXPECT_EQ(g.component(0, 1), g.component(1, 3));
+  EXPECT_EQ(g.component(1, 1), g.component(0, 3));
+  EXPECT_NE(g.component(0, 1), g.component(0, 3));
+  EXPECT_EQ(g.component(0, 2), g.component(2, 0));
+}
+
+TEST(EdgeSharingGraph, FourByFourQuadrantsCountedByHand)
+{
+  // Face (i, j) in cluster c = (i / 2) + 2 (j / 2). Inside a quadrant, edges
+  // link (c,1)~(c,3) and (c,0)~(c,2); across the middle column (c,1)~(c+1,3)
+  // for c = 0, 2; across the middle row (c,2)~(c+2,0) for c = 0, 1. Vertical
+  // components: {0,1} and {2,3} clusters; horizontal: {0,2} and {1,3}. DOF 4.
+  Mesh m = grid(4, 4);
+  Labelling l = label(m, [](int f) { return (f % 4) / 2 + 2 * ((f / 4) / 2); });
+  TS::Edge_sharing_graph<Mesh> g(m, 4, l.cluster, l.orientation);
+  EXPECT_EQ(g.degree_of_flexibility(), 4u);
+  const auto p0 = g.cluster_pattern(0), p3 = g.cluster_pattern(3);
+  EXPECT_EQ(p0[1], p0[3]);
+  EXPECT_NE(p0[1], p3[1]);
+
+  // Clusters 0 and 3 share no component; merging them with the identity
+  // correspondence joins {0,1}-vertical with {2,3}-vertical and {0,2}- with
+  // {1,3}-horizontal: DOF 2.
+  EXPECT_EQ(g.merge_clusters(0, 3, TS::Quad_orientation(0)), 2u);
+  EXPECT_FALSE(g.is_alive(3));
+}
+
+TEST(EdgeSharingGraph, EdgeComponentMapColoursMeshEdges)
+{
+  Mesh m = grid(3, 2);
+  Labelling l = label(m, [](int) { return 0; });
+  TS::Edge_sharing_graph<Mesh> g(m, 1, l.cluster, l.orientation);
+  const auto colours = g.edge_component_map();
+  for(auto e : edges(m))
+  {
+    const auto a = m.point(source(e, m)), b = m.point(target(e, m));
+    const bool horizontal = a.y() == b.y();
+    EXPECT_EQ(get(colours, e), horizontal ? g.component(0, 0) : g.component(0, 1));
+  }
+}
+
+TEST(EdgeSharingGraph, CopiesAreIndependent)
+{
+  Mesh m = grid(4, 4);
+  Labelling l = label(m, [](int f) { return (f % 4) % 2 + 2 * ((f / 4) % 2); });
+  TS::Edge_sharing_graph<Mesh> g(m, 4, l.cluster, l.orientation);
+  TS::Edge_sharing_graph<Mesh> copy = g;
+  copy.merge_clusters(0, 1, TS::Quad_orientation(0));
+  EXPECT_EQ(g.degree_of_flexibility(), 8u);
+  EXPECT_LT(copy.degree_of_flexibility(), 8u);
+  EXPECT_TRUE(g.is_alive(1));
+}
+
+TEST(EdgeSharingGraph, RejectsBadLabels)
+{
+  Mesh m = grid(2, 2);
+  Labelling l = label(m, [](int f) { return f; });
+  EXPECT_THROW(TS::Edge_sharing_graph<Mesh>(m, 3, l.cluster, l.orientation), TS::Invalid_input);
+  Labelling o = label(m, [](int) { return 0; }, [](int) { return 8; });
+  EXPECT_THROW(TS::Edge_sharing_graph<Mesh>(m, 1, o.cluster, o.orientation), TS::Invalid_input);
+}

@@ -1,0 +1,142 @@
+// Tests of measure_tilability(): exact values on tiny meshes, and agreement
+// with an independent rigid-fit check on an optimized surface.
+
+#include "optimization_test_helpers.h"
+
+#include <CGAL/Tilable_surfaces/measure.h>
+#include <CGAL/Tilable_surfaces/optimize_tilable_surface.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+using namespace test_helpers;
+
+namespace {
+
+// Two unit squares side by side in the plane z = 0, sharing the edge x = 1.
+Mesh two_squares()
+{
+  Mesh m;
+  const Vertex a = m.add_vertex(Point(0, 0, 0)), b = m.add_vertex(Point(1, 0, 0)),
+               c = m.add_vertex(Point(1, 1, 0)), d = m.add_vertex(Point(0, 1, 0)),
+               e = m.add_vertex(Point(2, 0, 0)), f = m.add_vertex(Point(2, 1, 0));
+  m.add_face(a, b, c, d);
+  m.add_face(b, e, f, c);
+  return m;
+}
+
+Mesh unit_square()
+{
+  Mesh m;
+  m.add_face(m.add_vertex(Point(0, 0, 0)), m.add_vertex(Point(1, 0, 0)),
+             m.add_vertex(Point(1, 1, 0)), m.add_vertex(Point(0, 1, 0)));
+  return m;
+}
+
+auto clustering_parameters(const Clustering& c)
+{
+  return TS::parameters::face_cluster_map(c.cluster).face_orientation_map(c.orientation);
+}
+
+} // namespace
+
+TEST(Measure, TwoUnitSquaresAreExactlyTilable)
+{
+  Mesh mesh = two_squares();
+  const Clustering c = single_cluster(mesh);
+  const TS::Tilability_measure m = TS::measure_tilability(mesh, mesh, clustering_parameters(c));
+  EXPECT_EQ(m.number_of_clusters, 1u);
+  EXPECT_EQ(m.degree_of_flexibility, 3u); // template edges 1 and 3 are shared
+  EXPECT_EQ(m.cluster_sizes, std::vector<std::size_t>{2});
+  EXPECT_EQ(m.congruence_error, 0.0);
+  EXPECT_EQ(m.max_approximation_error, 0.0);
+  EXPECT_EQ(m.mean_approximation_error, 0.0);
+  EXPECT_EQ(m.max_displacement, 0.0);
+  EXPECT_DOUBLE_EQ(m.mean_edge_length, 1.0);
+  EXPECT_DOUBLE_EQ(m.input_bbox_diagonal, std::sqrt(5.0));
+  for(double t : {m.normalized_terms.distance, m.normalized_terms.fairness,
+                  m.normalized_terms.edge_length, m.normalized_terms.diagonal,
+                  m.normalized_terms.volume})
+    EXPECT_EQ(t, 0.0);
+  // The S-quad is the unit square, t0 at the origin and t1 on +x.
+  const TS::Quad& s = m.s_quads[0];
+  const Eigen::Vector3d expected[4] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
+  for(int i = 0; i < 4; ++i)
+    EXPECT_LE((s[i] - expected[i]).norm(), 1e-15) << "corner " << i;
+}
+
+TEST(Measure, MovedVertexGivesItsDisplacement)
+{
+  Mesh input = two_squares();
+  Mesh result = input;
+  const Clustering c = every_face_alone(result);
+  result.point(Vertex(0)) = Point(0, 0, 0.1); // corner of the first square only
+  const TS::Tilability_measure m = TS::measure_tilability(result, input, clustering_parameters(c));
+  EXPECT_DOUBLE_EQ(m.max_displacement, 0.1);
+  EXPECT_DOUBLE_EQ(m.mean_displacement, 0.1 / 6);
+  EXPECT_DOUBLE_EQ(m.max_approximation_error, 0.1 / std::sqrt(5.0));
+  EXPECT_LE(m.congruence_error, 1e-15); // every face alone: rounding only
+  // Scaled into the unit cube by 1/2: F_d = (0.05)^2 over 6 vertices.
+  EXPECT_DOUBLE_EQ(m.normalized_terms.distance, 0.0025 / 6);
+}
+
+TEST(Measure, QuadTranslatedOffThePlane)
+{
+  Mesh input = unit_square();
+  Mesh result = input;
+  const Clustering c = every_face_alone(result);
+  const double d = 0.25;
+  for(Vertex v : vertices(result))
+    result.point(v) = result.point(v) + Kernel::Vector_3(0, 0, d);
+  const TS::Tilability_measure m = TS::measure_tilability(result, input, clustering_parameters(c));
+  EXPECT_DOUBLE_EQ(m.max_approximation_error, d / std::sqrt(2.0));
+  EXPECT_DOUBLE_EQ(m.mean_approximation_error, d / std::sqrt(2.0));
+  EXPECT_DOUBLE_EQ(m.max_displacement, d);
+  EXPECT_LE(m.congruence_error, 1e-15);
+}
+
+TEST(Measure, CongruenceErrorAgreesWithPairwiseFits)
+{
+  // Non-congruent instances: the monkey saddle in one cluster. The package's
+  // error (against the Procrustes mean) is between half the pairwise error
+  // and the pairwise error (triangle inequality).
+  Mesh mesh = load("monkey_saddle.off");
+  const Clustering c = single_cluster(mesh);
+  const TS::Tilability_measure m = TS::measure_tilability(mesh, mesh, clustering_parameters(c));
+  const double pairwise = pairwise_congruence_error(mesh, c);
+  EXPECT_GT(m.congruence_error, 0.0);
+  EXPECT_LE(m.congruence_error, pairwise * (1 + 1e-12));
+  EXPECT_GE(m.congruence_error, 0.5 * pairwise / 2); // vs the first instance, not the worst pair
+  EXPECT_EQ(m.cluster_congruence_errors.size(), 1u);
+  EXPECT_EQ(m.max_displacement, 0.0);
+  EXPECT_LE(m.max_approximation_error, 1e-15); // a surface against itself
+}
+
+TEST(Measure, OptimizedSurfaceMeasuredTwiceAgrees)
+{
+  Mesh input = load("monkey_saddle.off");
+  Mesh result = input;
+  const Clustering c = single_cluster(result);
+  const TS::Optimization_result r = TS::optimize_tilable_surface(result, clustering_parameters(c));
+  const TS::Tilability_measure m = TS::measure_tilability(result, input, clustering_parameters(c));
+  EXPECT_NEAR(m.congruence_error, r.measure.congruence_error, 1e-12);
+  EXPECT_NEAR(m.max_approximation_error, r.measure.max_approximation_error, 1e-12);
+  EXPECT_NEAR(m.max_displacement, r.measure.max_displacement, 1e-12);
+  EXPECT_LE(pairwise_congruence_error(result, c), 2 * m.congruence_error + 1e-12);
+  // Canonical frame of the S-quad.
+  const TS::Quad& s = m.s_quads[0];
+  EXPECT_LE(s[0].norm(), 1e-12);
+  EXPECT_GT(s[1].x(), 0.0);
+  EXPECT_LE(std::abs(s[1].y()) + std::abs(s[1].z()) + std::abs(s[2].z()), 1e-12);
+  EXPECT_GE(s[2].y(), 0.0);
+  EXPECT_EQ(m.degree_of_flexibility, 1u);
+}
+
+TEST(Measure, MismatchedMeshesThrow)
+{
+  Mesh a = two_squares();
+  Mesh b = unit_square();
+  const Clustering c = every_face_alone(a);
+  EXPECT_THROW(TS::measure_tilability(a, b, clustering_parameters(c)), TS::Invalid_input);
+}

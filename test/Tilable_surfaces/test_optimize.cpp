@@ -1,0 +1,228 @@
+// Tests of optimize_tilable_surface(): both solvers on clusterings built in
+// the test (optimization_test_helpers.h); congruence is checked with a rigid
+// fit computed here, not read from the result.
+
+#include "optimization_test_helpers.h"
+
+#include <CGAL/Tilable_surfaces/optimize_tilable_surface.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+
+using namespace test_helpers;
+
+namespace {
+
+template <typename NP>
+auto clustering_parameters(const Clustering& c, const NP& np)
+{
+  return np.face_cluster_map(c.cluster).face_orientation_map(c.orientation);
+}
+
+auto clustering_parameters(const Clustering& c)
+{
+  return TS::parameters::face_cluster_map(c.cluster).face_orientation_map(c.orientation);
+}
+
+void print(const std::string& what, const Mesh& mesh, const TS::Optimization_result& r)
+{
+  std::cout << "[ numbers  ] " << what << ": K=" << r.measure.number_of_clusters
+            << " DOF=" << r.measure.degree_of_flexibility
+            << " congruence=" << r.measure.congruence_error
+            << " max_displacement/diag=" << r.measure.max_displacement / r.measure.input_bbox_diagonal
+            << " max_approx=" << r.measure.max_approximation_error
+            << " mean_approx=" << r.measure.mean_approximation_error
+            << " iterations=" << r.iterations << " converged=" << r.converged
+            << " time=" << r.setup_time + r.solve_time + r.measure_time << "s"
+            << " (vertices " << num_vertices(mesh) << ")\n";
+}
+
+bool all_finite(const Mesh& mesh)
+{
+  for(Vertex v : vertices(mesh))
+    for(int i = 0; i < 3; ++i)
+      if(!std::isfinite(mesh.point(v)[i]))
+        return false;
+  return true;
+}
+
+// Counts the iterations and stops after `stop_after`.
+struct Counting_visitor : TS::Default_optimization_visitor
+{
+  int* calls;
+  int stop_after;
+  bool iteration(int, double congruence, double objective)
+  {
+    EXPECT_TRUE(std::isfinite(congruence) && std::isfinite(objective));
+    return ++*calls < stop_after;
+  }
+};
+
+} // namespace
+
+TEST(Optimize, EveryFaceAloneDoesNotMove)
+{
+  Mesh mesh = load("monkey_saddle.off");
+  const std::vector<Point> before = points_of(mesh);
+  const Clustering c = every_face_alone(mesh);
+  const TS::Optimization_result r = TS::optimize_tilable_surface(mesh, clustering_parameters(c));
+  EXPECT_TRUE(r.converged);
+  EXPECT_EQ(r.measure.number_of_clusters, num_faces(mesh));
+  EXPECT_TRUE(points_of(mesh) == before); // bit-identical
+  EXPECT_EQ(r.measure.max_displacement, 0.0);
+}
+
+TEST(Optimize, MonkeySaddleSingleClusterBecomesFlatAndCongruent)
+{
+  Mesh mesh = load("monkey_saddle.off");
+  const Clustering c = single_cluster(mesh);
+  const TS::Optimization_result r = TS::optimize_tilable_surface(mesh, clustering_parameters(c));
+  print("monkey saddle K=1 (Gauss-Newton)", mesh, r);
+  ASSERT_TRUE(all_finite(mesh));
+  EXPECT_TRUE(r.converged);
+  EXPECT_LE(r.measure.congruence_error, 1e-6);
+  EXPECT_LE(pairwise_congruence_error(mesh, c), 2e-6);
+  const double ell = TS::mean_edge_length(mesh);
+  for(Face f : faces(mesh))
+    EXPECT_LE(TS::planarity_defect(TS::face_quad(f, mesh)), 1e-6 * ell);
+}
+
+TEST(Optimize, DecocubeSingleClusterCongruent)
+{
+  Mesh mesh = load("decocube.off");
+  const Clustering c = single_cluster(mesh);
+  const TS::Optimization_result r = TS::optimize_tilable_surface(mesh, clustering_parameters(c));
+  print("decocube K=1 (Gauss-Newton)", mesh, r);
+  ASSERT_TRUE(all_finite(mesh));
+  EXPECT_TRUE(r.converged);
+  EXPECT_LE(pairwise_congruence_error(mesh, c), 2e-6);
+}
+
+TEST(Optimize, FixedVerticesAreBitIdentical)
+{
+  Mesh mesh = load("monkey_saddle.off");
+  const Clustering c = greedy_clustering(mesh, 24);
+  auto fixed = mesh.add_property_map<Vertex, bool>("v:fixed", false).first;
+  int count = 0;
+  for(Vertex v : vertices(mesh))
+    fixed[v] = mesh.is_border(v) && (count++ % 3 == 0);
+  const std::vector<Point> before = points_of(mesh);
+  const TS::Optimization_result r = TS::optimize_tilable_surface(
+    mesh, clustering_parameters(c, TS::parameters::vertex_is_constrained_map(fixed)));
+  print("monkey saddle greedy K=24, a third of the boundary fixed", mesh, r);
+  ASSERT_TRUE(all_finite(mesh));
+  bool moved = false;
+  for(Vertex v : vertices(mesh))
+  {
+    if(fixed[v])
+      EXPECT_TRUE(mesh.point(v) == before[v]);
+    else
+      moved = moved || mesh.point(v) != before[v];
+  }
+  EXPECT_TRUE(moved);
+}
+
+TEST(Optimize, SimilarityInvariance)
+{
+  Mesh mesh = load("monkey_saddle.off");
+  const Clustering c = greedy_clustering(mesh, 24);
+  Mesh moved_mesh = mesh; // with the same clustering maps
+  Clustering c2;
+  c2.cluster = moved_mesh.property_map<Face, int>("f:cluster").first;
+  c2.orientation = moved_mesh.property_map<Face, int>("f:orientation").first;
+  c2.K = c.K;
+  const Kernel::Vector_3 t(1e3, 1e3, 1e3);
+  auto similarity = [&](const Point& p) { return CGAL::ORIGIN + 1e-3 * ((p - CGAL::ORIGIN) + t); };
+  for(Vertex v : vertices(moved_mesh))
+    moved_mesh.point(v) = similarity(moved_mesh.point(v));
+
+  const TS::Optimization_result r = TS::optimize_tilable_surface(mesh, clustering_parameters(c));
+  const TS::Optimization_result r2 = TS::optimize_tilable_surface(moved_mesh, clustering_parameters(c2));
+  EXPECT_EQ(r.iterations, r2.iterations);
+  const double diagonal = bbox_diagonal(moved_mesh);
+  double worst = 0;
+  for(Vertex v : vertices(mesh))
+    worst = (std::max)(worst, std::sqrt(CGAL::squared_distance(similarity(mesh.point(v)),
+                                                               moved_mesh.point(v))) / diagonal);
+  EXPECT_LE(worst, 1e-9);
+  EXPECT_NEAR(r.measure.congruence_error, r2.measure.congruence_error,
+              1e-9 + 1e-6 * r.measure.congruence_error);
+}
+
+TEST(Optimize, VisitorStopsEarly)
+{
+  Mesh mesh = load("monkey_saddle.off");
+  const Clustering c = single_cluster(mesh);
+  int calls = 0;
+  Counting_visitor visitor;
+  visitor.calls = &calls;
+  visitor.stop_after = 2;
+  const TS::Optimization_result r = TS::optimize_tilable_surface(
+    mesh, clustering_parameters(c, TS::parameters::visitor(visitor)));
+  EXPECT_EQ(calls, 2);
+  EXPECT_EQ(r.iterations, 2);
+}
+
+TEST(Optimize, InvalidInputThrowsBeforeTouchingTheMesh)
+{
+  Mesh mesh = load("monkey_saddle.off");
+  const std::vector<Point> before = points_of(mesh);
+  Clustering c = single_cluster(mesh);
+  c.orientation[*faces(mesh).begin()] = 8;
+  EXPECT_THROW(TS::optimize_tilable_surface(mesh, clustering_parameters(c)), TS::Invalid_input);
+  c.orientation[*faces(mesh).begin()] = 0;
+  c.cluster[*faces(mesh).begin()] = -1;
+  EXPECT_THROW(TS::optimize_tilable_surface(mesh, clustering_parameters(c)), TS::Invalid_input);
+  c.cluster[*faces(mesh).begin()] = 0;
+  EXPECT_THROW(TS::optimize_tilable_surface(
+                 mesh, clustering_parameters(c, TS::parameters::distance_weight(0.0))),
+               TS::Invalid_input);
+  EXPECT_TRUE(points_of(mesh) == before);
+
+  Mesh mixed = load("mushroom.off");
+  const Clustering m = every_face_alone(mixed);
+  EXPECT_THROW(TS::optimize_tilable_surface(mixed, clustering_parameters(m)), TS::Invalid_input);
+}
+
+TEST(Optimize, PaperConjugateGradientLowersTheConstraintTerms)
+{
+  Mesh mesh = load("monkey_saddle.off");
+  const Clustering c = single_cluster(mesh);
+  const TS::Optimization_result r = TS::optimize_tilable_surface(
+    mesh, clustering_parameters(c, TS::parameters::solver(TS::PAPER_CONJUGATE_GRADIENT)));
+  print("monkey saddle K=1 (paper CG)", mesh, r);
+  ASSERT_TRUE(all_finite(mesh));
+  Mesh input = load("monkey_saddle.off");
+  const TS::Tilability_measure m0 = TS::measure_tilability(input, input, clustering_parameters(c));
+  EXPECT_LT(r.measure.normalized_terms.edge_length, m0.normalized_terms.edge_length);
+  EXPECT_LT(r.measure.normalized_terms.diagonal, m0.normalized_terms.diagonal);
+  EXPECT_LT(r.measure.congruence_error, m0.congruence_error);
+  EXPECT_GT(r.iterations, 0);
+}
+
+// Method notes §4b: on the same clustering the constrained solver reaches
+// the tolerance, moving less than the paper's penalty method with lowered
+// weights, which must either stay incongruent or move more.
+TEST(Optimize, ConstrainedSolverBeatsPaperMethodOnSameClustering)
+{
+  Mesh mesh = load("monkey_saddle.off");
+  const Clustering c = greedy_clustering(mesh, 24);
+  Mesh paper = mesh;
+  Clustering cp;
+  cp.cluster = paper.property_map<Face, int>("f:cluster").first;
+  cp.orientation = paper.property_map<Face, int>("f:orientation").first;
+  const TS::Optimization_result r = TS::optimize_tilable_surface(mesh, clustering_parameters(c));
+  print("monkey saddle greedy K=24 (Gauss-Newton)", mesh, r);
+  const TS::Optimization_result rp = TS::optimize_tilable_surface(
+    paper, clustering_parameters(cp, TS::parameters::solver(TS::PAPER_CONJUGATE_GRADIENT)
+                                       .distance_weight(1e-6).fairness_weight(1e-6)));
+  print("monkey saddle greedy K=24 (paper CG, mu1 = mu2 = 1e-6)", paper, rp);
+  EXPECT_TRUE(r.converged);
+  EXPECT_LE(pairwise_congruence_error(mesh, c), 2e-6);
+  if(rp.measure.congruence_error <= 1e-6)
+    EXPECT_LT(r.measure.max_displacement, rp.measure.max_displacement);
+  else
+    EXPECT_FALSE(rp.converged);
+}

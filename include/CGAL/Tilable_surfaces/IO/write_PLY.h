@@ -68,7 +68,7 @@ bool write_tiled_PLY(std::ostream& os, const PolygonMesh& pm,
   std::unordered_map<vertex_descriptor, Output_mesh::Vertex_index> vertex_image;
   for(vertex_descriptor v : vertices(pm))
   {
-    const Eigen::Vector3d p = internal::to_eigen(get(vpm, v));
+    const Eigen::Vector3d p = Tilable_surfaces::internal::to_eigen(get(vpm, v));
     vertex_image.emplace(v, out.add_vertex(Output_mesh::Point(p.x(), p.y(), p.z())));
   }
   std::vector<std::pair<face_descriptor, Output_mesh::Face_index> > face_pairs;

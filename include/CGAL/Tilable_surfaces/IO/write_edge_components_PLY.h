@@ -66,7 +66,7 @@ bool write_edge_components_PLY(std::ostream& os, const PolygonMesh& pm,
     // shading would blend the colours across edges.
     std::vector<Eigen::Vector3d> corners;
     for(auto v : CGAL::vertices_around_face(halfedge(f, pm), pm))
-      corners.push_back(internal::to_eigen(get(vpm, v)));
+      corners.push_back(Tilable_surfaces::internal::to_eigen(get(vpm, v)));
     Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
     for(const auto& p : corners) centroid += p / double(corners.size());
     const auto c = out.add_vertex(to_point(centroid));

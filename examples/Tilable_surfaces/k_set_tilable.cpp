@@ -1,0 +1,373 @@
+// k_set_tilable: the command-line program for architects.
+//
+//   k_set_tilable INPUT -k K -o OUTPUT.ply [--report REPORT.json] [--catalog TILES.csv|TILES.json]
+//                 [--components EDGES.ply] [--distance-weight W] [--fairness-weight W]
+//                 [--candidates N] [--solver gauss-newton|paper-cg] [--fixed-boundary]
+//                 [--iterations N] [--seed S] [--threads N] [--ascii] [--quiet] [--help]
+//
+// Reads a quad mesh (OFF, OBJ or PLY), makes it K-set tilable, and writes the
+// moved mesh (PLY with per-face cluster, orientation and colour), a JSON
+// report of what was measured, and the tile catalog. Exit codes: 0 done,
+// 2 bad input or arguments (nothing written), 1 internal failure.
+
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <CGAL/Tilable_surfaces/IO/report.h>
+#include <CGAL/Tilable_surfaces/IO/tile_catalog.h>
+#include <CGAL/Tilable_surfaces/IO/write_PLY.h>
+#include <CGAL/Tilable_surfaces/IO/write_edge_components_PLY.h>
+#include <CGAL/Tilable_surfaces/make_k_set_tilable.h>
+
+#include <boost/program_options.hpp>
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#endif
+
+#include <cstdio>
+#include <fstream>
+#include <functional>
+#include <iomanip>
+#include <iostream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+typedef CGAL::Simple_cartesian<double> Kernel;
+typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
+namespace TS = CGAL::Tilable_surfaces;
+namespace TSP = CGAL::Tilable_surfaces::parameters;
+namespace po = boost::program_options;
+
+namespace {
+
+// A problem with the user's input or arguments: exit code 2.
+struct Usage_error : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+struct Options
+{
+  std::string input, output, report, catalog, components;
+  int k = 0;
+  double distance_weight = 1e-4, fairness_weight = 1e-4;
+  int candidates = 10, iterations = -1, threads = 0;
+  unsigned int seed = 0;
+  std::string solver = "gauss-newton";
+  bool fixed_boundary = false, ascii = false, quiet = false;
+};
+
+std::string extension(const std::string& path)
+{
+  const std::size_t dot = path.find_last_of('.');
+  const std::size_t slash = path.find_last_of('/');
+  if(dot == std::string::npos || (slash != std::string::npos && dot < slash))
+    return "";
+  std::string e = path.substr(dot + 1);
+  for(char& c : e) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return e;
+}
+
+Options parse(int argc, char** argv, bool& help)
+{
+  Options o;
+  po::options_description visible(
+    "Usage: k_set_tilable INPUT -k K -o OUTPUT.ply [options]\n"
+    "Makes the quad mesh INPUT (OFF, OBJ or PLY) tilable by K distinct quad shapes.\nOptions");
+  visible.add_options()
+    ("help,h", "print this help and exit")
+    ("k,k", po::value<int>(&o.k)->required(), "number K of distinct tiles (S-quads)")
+    ("output,o", po::value<std::string>(&o.output)->required(),
+     "moved mesh: .ply (with face properties cluster, orientation, red/green/blue), "
+     ".off or .obj (geometry only)")
+    ("report", po::value<std::string>(&o.report), "JSON report of everything measured")
+    ("catalog", po::value<std::string>(&o.catalog), "tile catalog, .csv or .json")
+    ("components", po::value<std::string>(&o.components),
+     "PLY picture of the edge-sharing components (paper Fig. 6)")
+    ("distance-weight", po::value<double>(&o.distance_weight)->default_value(1e-4),
+     "mu1, closeness to the input")
+    ("fairness-weight", po::value<double>(&o.fairness_weight)->default_value(1e-4), "mu2, fairness")
+    ("candidates", po::value<int>(&o.candidates)->default_value(10),
+     "candidate configurations kept while clustering")
+    ("solver", po::value<std::string>(&o.solver)->default_value("gauss-newton"),
+     "gauss-newton (exact, default) or paper-cg (the paper's conjugate gradient)")
+    ("fixed-boundary", po::bool_switch(&o.fixed_boundary), "boundary vertices do not move")
+    ("iterations", po::value<int>(&o.iterations), "maximum solver iterations")
+    ("seed", po::value<unsigned int>(&o.seed)->default_value(0), "random seed")
+    ("threads", po::value<int>(&o.threads)->default_value(0), "threads (0: all cores)")
+    ("ascii", po::bool_switch(&o.ascii), "ASCII PLY instead of binary")
+    ("quiet,q", po::bool_switch(&o.quiet), "no progress on stderr");
+  po::options_description hidden;
+  hidden.add_options()("input", po::value<std::string>(&o.input)->required(), "input mesh");
+  po::options_description all;
+  all.add(visible).add(hidden);
+  po::positional_options_description positional;
+  positional.add("input", 1);
+
+  po::variables_map vm;
+  try
+  {
+    po::store(po::command_line_parser(argc, argv).options(all).positional(positional).run(), vm);
+    if(vm.count("help"))
+    {
+      help = true;
+      std::cout << visible << "\n";
+      return o;
+    }
+    po::notify(vm);
+  }
+  catch(const po::error& e)
+  {
+    throw Usage_error(e.what());
+  }
+
+  if(o.k < 1)
+    throw Usage_error("-k must be at least 1, got " + std::to_string(o.k));
+  const std::string out_ext = extension(o.output);
+  if(out_ext != "ply" && out_ext != "off" && out_ext != "obj")
+    throw Usage_error("the output '" + o.output + "' must end in .ply, .off or .obj");
+  if(!o.catalog.empty() && extension(o.catalog) != "csv" && extension(o.catalog) != "json")
+    throw Usage_error("the catalog '" + o.catalog + "' must end in .csv or .json");
+  if(!o.report.empty() && extension(o.report) != "json")
+    throw Usage_error("the report '" + o.report + "' must end in .json");
+  if(!o.components.empty() && extension(o.components) != "ply")
+    throw Usage_error("the components picture '" + o.components + "' must end in .ply");
+  if(o.solver != "gauss-newton" && o.solver != "paper-cg")
+    throw Usage_error("unknown solver '" + o.solver + "' (gauss-newton or paper-cg)");
+  if(o.candidates < 1)
+    throw Usage_error("--candidates must be at least 1");
+  if(vm.count("iterations") && o.iterations < 0)
+    throw Usage_error("--iterations must be >= 0");
+  if(o.threads < 0)
+    throw Usage_error("--threads must be >= 0");
+  if(!(o.distance_weight > 0) || !(o.fairness_weight >= 0))
+    throw Usage_error("--distance-weight must be > 0 and --fairness-weight >= 0");
+  return o;
+}
+
+Mesh read_input(const std::string& path)
+{
+  if(!std::ifstream(path))
+    throw Usage_error("cannot open '" + path + "': no such file or not readable");
+  const std::string ext = extension(path);
+  if(ext != "off" && ext != "obj" && ext != "ply")
+    throw Usage_error("'" + path + "' is not an OFF, OBJ or PLY file");
+  Mesh mesh;
+  if(!CGAL::IO::read_polygon_mesh(path, mesh, CGAL::parameters::verbose(false)) || mesh.is_empty())
+    throw Usage_error("'" + path + "' is not a readable polygon mesh "
+                      "(corrupt file, or a non-manifold or inconsistently oriented surface)");
+  return mesh;
+}
+
+// Progress on stderr: one line per phase, one per solver iteration.
+struct Progress_visitor
+{
+  bool quiet = false;
+  bool iteration(int it, double congruence, double objective)
+  {
+    if(!quiet)
+      std::cerr << "  iteration " << std::setw(3) << it << ": congruence error "
+                << std::scientific << std::setprecision(2) << congruence << ", objective "
+                << objective << std::defaultfloat << "\n";
+    return true;
+  }
+  void phase(const char* name, double seconds)
+  {
+    if(!quiet)
+      std::cerr << "[k_set_tilable] " << name << " done in " << std::fixed << std::setprecision(2)
+                << seconds << " s" << std::defaultfloat << "\n";
+  }
+};
+
+// Each output is written to a temporary file and renamed at the end, so a
+// failure never leaves a partial file.
+class Output_files
+{
+public:
+  void add(const std::string& path, const std::function<bool(std::ostream&)>& write)
+  {
+    const std::string tmp = path + ".tmp";
+    std::ofstream out(tmp, std::ios::binary);
+    if(!out || !write(out) || !(out.flush()))
+    {
+      std::remove(tmp.c_str());
+      discard();
+      throw std::runtime_error("cannot write '" + path + "'");
+    }
+    m_pending.emplace_back(tmp, path);
+  }
+  void commit()
+  {
+    for(const auto& p : m_pending)
+      if(std::rename(p.first.c_str(), p.second.c_str()) != 0)
+        throw std::runtime_error("cannot create '" + p.second + "'");
+    m_pending.clear();
+  }
+  void discard()
+  {
+    for(const auto& p : m_pending) std::remove(p.first.c_str());
+    m_pending.clear();
+  }
+  ~Output_files() { discard(); }
+
+private:
+  std::vector<std::pair<std::string, std::string> > m_pending;
+};
+
+// Checks that a file can be created at `path` before the long computation.
+void check_writable(const std::string& path)
+{
+  if(path.empty())
+    return;
+  const std::string probe = path + ".tmp";
+  if(!std::ofstream(probe))
+    throw Usage_error("cannot create '" + path + "' (missing directory or no permission)");
+  std::remove(probe.c_str());
+}
+
+int run(const Options& o)
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  std::unique_ptr<tbb::global_control> threads;
+  if(o.threads > 0)
+    threads.reset(new tbb::global_control(tbb::global_control::max_allowed_parallelism, o.threads));
+#endif
+  for(const std::string& path : {o.output, o.report, o.catalog, o.components})
+    check_writable(path);
+
+  CGAL::Real_timer timer;
+  timer.start();
+  Mesh mesh = read_input(o.input);
+  const Mesh input = mesh;
+  Progress_visitor progress;
+  progress.quiet = o.quiet;
+  progress.phase("reading", timer.time());
+  if(!o.quiet)
+    std::cerr << "[k_set_tilable] " << o.input << ": " << mesh.number_of_vertices() << " vertices, "
+              << mesh.number_of_faces() << " faces, K = " << o.k << "\n";
+
+  auto cluster = mesh.add_property_map<Mesh::Face_index, int>("f:ts_cluster", 0).first;
+  auto orientation = mesh.add_property_map<Mesh::Face_index, int>("f:ts_orientation", 0).first;
+  auto fixed = mesh.add_property_map<Mesh::Vertex_index, bool>("v:ts_fixed", false).first;
+  if(o.fixed_boundary)
+    for(auto v : vertices(mesh)) fixed[v] = bool(CGAL::is_border(v, mesh));
+
+  const TS::Solver_type solver =
+    o.solver == "paper-cg" ? TS::PAPER_CONJUGATE_GRADIENT : TS::CONSTRAINED_GAUSS_NEWTON;
+  auto np = TSP::number_of_tiles(o.k)
+              .face_cluster_map(cluster)
+              .face_orientation_map(orientation)
+              .vertex_is_constrained_map(fixed)
+              .distance_weight(o.distance_weight)
+              .fairness_weight(o.fairness_weight)
+              .number_of_candidates(std::size_t(o.candidates))
+              .solver(solver)
+              .random_seed(o.seed)
+              .visitor(progress);
+  TS::K_set_tilable_result result = o.iterations >= 0
+    ? TS::make_k_set_tilable(mesh, np.number_of_iterations(o.iterations))
+    : TS::make_k_set_tilable(mesh, np);
+
+  CGAL::Real_timer write_timer;
+  write_timer.start();
+  Output_files files;
+  if(extension(o.output) == "ply")
+    files.add(o.output, [&](std::ostream& out) {
+      return TS::IO::write_tiled_PLY(out, mesh, TSP::face_cluster_map(cluster)
+                                                  .face_orientation_map(orientation)
+                                                  .use_binary_mode(!o.ascii));
+    });
+  else
+  {
+    if(!o.quiet)
+      std::cerr << "[k_set_tilable] note: " << extension(o.output)
+                << " keeps the geometry only; use .ply for clusters, orientations and colours\n";
+    const std::string ext = extension(o.output);
+    files.add(o.output, [&](std::ostream& out) {
+      out << std::setprecision(17);
+      return ext == "off" ? CGAL::IO::write_OFF(out, mesh) : CGAL::IO::write_OBJ(out, mesh);
+    });
+  }
+  if(!o.catalog.empty())
+    files.add(o.catalog, [&](std::ostream& out) {
+      return extension(o.catalog) == "csv" ? TS::IO::write_tile_catalog_CSV(out, result.tiles)
+                                           : TS::IO::write_tile_catalog_JSON(out, result.tiles);
+    });
+  if(!o.components.empty())
+  {
+    const TS::Edge_sharing_graph<Mesh> graph(mesh, result.optimization.measure.number_of_clusters,
+                                             cluster, orientation);
+    files.add(o.components, [&](std::ostream& out) {
+      return TS::IO::write_edge_components_PLY(out, mesh, graph.edge_component_map(),
+                                               TSP::use_binary_mode(!o.ascii));
+    });
+  }
+  if(!o.report.empty())
+  {
+    nlohmann::json report = TS::IO::tilability_report_json(result);
+    report["input"] = {{"file", o.input},
+                       {"vertices", input.number_of_vertices()},
+                       {"faces", input.number_of_faces()}};
+    report["parameters"] = {{"K", o.k},
+                            {"distance_weight", o.distance_weight},
+                            {"fairness_weight", o.fairness_weight},
+                            {"candidates", o.candidates},
+                            {"solver", o.solver},
+                            {"fixed_boundary", o.fixed_boundary},
+                            {"iterations", o.iterations},
+                            {"seed", o.seed},
+                            {"threads", o.threads}};
+    report["time_seconds"]["total_with_io"] = timer.time();
+    files.add(o.report, [&](std::ostream& out) {
+      out << std::setw(2) << report << "\n";
+      return bool(out);
+    });
+  }
+  files.commit();
+  progress.phase("writing", write_timer.time());
+
+  const TS::Tilability_measure& m = result.optimization.measure;
+  std::cerr << "[k_set_tilable] K = " << m.number_of_clusters << ", DOF = " << m.degree_of_flexibility
+            << ", congruence error " << std::scientific << std::setprecision(2) << m.congruence_error
+            << ", approximation error max " << m.max_approximation_error << " mean "
+            << m.mean_approximation_error << " (of the bbox diagonal), " << std::defaultfloat
+            << std::fixed << std::setprecision(2) << timer.time() << " s\n";
+  if(!result.is_tilable())
+    std::cerr << "[k_set_tilable] WARNING: not every panel fits its mold within 1e-6 of the mean "
+                 "edge length; see the report's per-cluster congruence errors\n";
+  return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+  Options options;
+  try
+  {
+    bool help = false;
+    options = parse(argc, argv, help);
+    if(help)
+      return 0;
+    return run(options);
+  }
+  catch(const Usage_error& e)
+  {
+    std::cerr << "k_set_tilable: error: " << e.what() << "\n";
+    return 2;
+  }
+  catch(const TS::Invalid_input& e)
+  {
+    std::cerr << "k_set_tilable: error: " << options.input << ": " << e.what() << "\n";
+    return 2;
+  }
+  catch(const std::exception& e)
+  {
+    std::cerr << "k_set_tilable: internal failure: " << e.what() << "\n";
+    return 1;
+  }
+}

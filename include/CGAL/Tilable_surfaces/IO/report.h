@@ -1,0 +1,83 @@
+// Copyright (c) 2026 Tilable_surfaces contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TILABLE_SURFACES_IO_REPORT_H
+#define CGAL_TILABLE_SURFACES_IO_REPORT_H
+
+/// \file report.h
+/// A JSON report of everything `make_k_set_tilable()` measured.
+
+#include <CGAL/Tilable_surfaces/make_k_set_tilable.h>
+
+#include <nlohmann/json.hpp>
+
+#include <ostream>
+
+namespace CGAL {
+namespace Tilable_surfaces {
+namespace IO {
+
+/// \ingroup PkgTilableSurfacesRef
+/// The normalized terms F̃_d..F̃_o of the paper's Table 1 as a JSON object.
+inline nlohmann::json energy_terms_json(const Energy_terms& t)
+{
+  return {{"distance", t.distance}, {"fairness", t.fairness}, {"edge_length", t.edge_length},
+          {"diagonal", t.diagonal}, {"volume", t.volume}};
+}
+
+/// \ingroup PkgTilableSurfacesRef
+/// The report of a run as JSON: K, degree of flexibility, cluster sizes,
+/// congruence error (worst and per cluster, relative to the mean edge length,
+/// and the tolerance it was held to), approximation error to the input
+/// (max and mean, relative to the input's bounding-box diagonal),
+/// displacement (mesh units), the paper's normalized terms, solver
+/// iterations, whether the result is tilable, the clustering's choice, and
+/// the time of each phase in seconds. Callers add what only they know
+/// (input name, parameters) to the returned object.
+inline nlohmann::json tilability_report_json(const K_set_tilable_result& r,
+                                              double congruence_tolerance = 1e-6)
+{
+  const Tilability_measure& m = r.optimization.measure;
+  return {
+    {"K", m.number_of_clusters},
+    {"degree_of_flexibility", m.degree_of_flexibility},
+    {"cluster_sizes", m.cluster_sizes},
+    {"congruence_error",
+     {{"worst", m.congruence_error},
+      {"per_cluster", m.cluster_congruence_errors},
+      {"tolerance", congruence_tolerance},
+      {"length_scale", "mean edge length"},
+      {"mean_edge_length", m.mean_edge_length}}},
+    {"approximation_error",
+     {{"max", m.max_approximation_error},
+      {"mean", m.mean_approximation_error},
+      {"length_scale", "input bounding-box diagonal"},
+      {"input_bbox_diagonal", m.input_bbox_diagonal}}},
+    {"displacement", {{"max", m.max_displacement}, {"mean", m.mean_displacement}}},
+    {"normalized_terms", energy_terms_json(m.normalized_terms)},
+    {"tilable", r.is_tilable()},
+    {"optimization",
+     {{"iterations", r.optimization.iterations},
+      {"converged", r.optimization.converged},
+      {"objective", r.optimization.objective}}},
+    {"clustering",
+     {{"path", r.clustering.path == EXACT_PATH ? "exact" : "descriptor"},
+      {"initial_clusters", r.clustering.number_of_initial_clusters},
+      {"total_weight", r.clustering.total_weight},
+      {"weights_are_exact", r.clustering.weights_are_exact},
+      {"degree_of_flexibility", r.clustering.degree_of_flexibility},
+      {"choice", r.clustering.choice_reason}}},
+    {"time_seconds",
+     {{"validation", r.validation_time},
+      {"clustering", r.clustering_time},
+      {"optimization_setup", r.optimization.setup_time},
+      {"optimization_solve", r.optimization.solve_time},
+      {"measurement", r.optimization.measure_time},
+      {"total", r.total_time}}}};
+}
+
+} // namespace IO
+} // namespace Tilable_surfaces
+} // namespace CGAL
+
+#endif // CGAL_TILABLE_SURFACES_IO_REPORT_H

@@ -1,0 +1,206 @@
+// The k_set_tilable command-line program, end to end: it runs, its files parse
+// back and agree with each other and with the input, and every bad input gives
+// exit code 2, a message, and no file.
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <CGAL/Tilable_surfaces/quad_shape.h>
+
+#include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
+
+#include <sys/wait.h>
+
+#include <array>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace TS = CGAL::Tilable_surfaces;
+namespace fs = std::filesystem;
+typedef CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> Mesh;
+
+namespace {
+
+const std::string data_dir = CGAL_TILABLE_SURFACES_TEST_DATA;
+
+struct Run_result
+{
+  int exit_code;
+  std::string output;  // stdout and stderr
+};
+
+Run_result run(const std::string& arguments)
+{
+  const std::string command = std::string(K_SET_TILABLE_BINARY) + " " + arguments + " 2>&1";
+  FILE* pipe = popen(command.c_str(), "r");
+  EXPECT_NE(pipe, nullptr);
+  std::string output;
+  std::array<char, 4096> buffer;
+  while(std::fgets(buffer.data(), int(buffer.size()), pipe)) output += buffer.data();
+  const int status = pclose(pipe);
+  return Run_result{WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
+}
+
+// A fresh, empty directory per test.
+fs::path scratch(const std::string& name)
+{
+  const fs::path dir = fs::temp_directory_path() / ("k_set_tilable_test_" + name);
+  fs::remove_all(dir);
+  fs::create_directories(dir);
+  return dir;
+}
+
+std::vector<std::vector<std::size_t> > face_lists(const Mesh& m)
+{
+  std::vector<std::vector<std::size_t> > lists;
+  for(auto f : faces(m))
+  {
+    lists.emplace_back();
+    for(auto v : CGAL::vertices_around_face(m.halfedge(f), m)) lists.back().push_back(v);
+  }
+  return lists;
+}
+
+std::vector<std::string> csv_cells(const std::string& line)
+{
+  std::vector<std::string> cells;
+  std::stringstream in(line);
+  std::string cell;
+  while(std::getline(in, cell, ',')) cells.push_back(cell);
+  return cells;
+}
+
+void check_run_on(const std::string& surface, int k, const std::string& catalog_ext)
+{
+  const fs::path dir = scratch(surface + std::to_string(k));
+  const fs::path ply = dir / "out.ply", report_path = dir / "report.json",
+                 catalog_path = dir / ("tiles." + catalog_ext);
+  const Run_result r = run(data_dir + "/" + surface + " -k " + std::to_string(k) + " -o " + ply.string() +
+                    " --report " + report_path.string() + " --catalog " + catalog_path.string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("clustering done"), std::string::npos) << "progress per phase";
+  EXPECT_NE(r.output.find("iteration"), std::string::npos) << "progress per iteration";
+
+  Mesh input, output;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(data_dir + "/" + surface, input));
+  std::ifstream ply_in(ply, std::ios::binary);
+  ASSERT_TRUE(CGAL::IO::read_PLY(ply_in, output));
+  EXPECT_EQ(face_lists(output), face_lists(input)) << "same connectivity, same order";
+
+  auto cluster = output.property_map<Mesh::Face_index, int>("f:cluster");
+  auto orientation = output.property_map<Mesh::Face_index, std::uint8_t>("f:orientation");
+  auto color = output.property_map<Mesh::Face_index, CGAL::IO::Color>("f:color");
+  ASSERT_TRUE(cluster.second && orientation.second && color.second);
+
+  std::ifstream report_in(report_path);
+  const nlohmann::json report = nlohmann::json::parse(report_in);
+  EXPECT_EQ(report["K"].get<int>(), k);
+  EXPECT_EQ(report["input"]["faces"].get<std::size_t>(), input.number_of_faces());
+
+  // The PLY's properties against the report: sizes per cluster, one distinct
+  // colour per cluster, orientations in 0..7.
+  std::vector<std::size_t> sizes(std::size_t(k), 0);
+  std::map<int, CGAL::IO::Color> color_of;
+  for(auto f : faces(output))
+  {
+    ASSERT_GE(cluster.first[f], 0);
+    ASSERT_LT(cluster.first[f], k);
+    ASSERT_LE(int(orientation.first[f]), 7);
+    ++sizes[std::size_t(cluster.first[f])];
+    const auto it = color_of.emplace(cluster.first[f], color.first[f]).first;
+    EXPECT_EQ(it->second, color.first[f]);
+  }
+  EXPECT_EQ(sizes, report["cluster_sizes"].get<std::vector<std::size_t> >());
+  std::set<std::array<int, 3> > distinct;
+  for(const auto& c : color_of) distinct.insert({{c.second.red(), c.second.green(), c.second.blue()}});
+  EXPECT_EQ(distinct.size(), std::size_t(k));
+
+  // The panels of the PLY fit their molds as the report says: each instance,
+  // read in its orientation, against the cluster's first instance.
+  const double scale = TS::mean_edge_length(output);
+  std::vector<std::vector<TS::Quad> > instances(static_cast<std::size_t>(k));
+  for(auto f : faces(output))
+    instances[std::size_t(cluster.first[f])].push_back(
+      TS::face_quad(f, output, TS::Quad_orientation(int(orientation.first[f]))));
+  double worst = 0;
+  for(const auto& group : instances)
+    for(const TS::Quad& q : group)
+      worst = (std::max)(worst, TS::rigid_fit_deviation(group.front(), q) / scale);
+  const double reported = report["congruence_error"]["worst"].get<double>();
+  EXPECT_LE(worst, 2 * reported + 1e-12) << "reported " << reported;
+  if(report["tilable"].get<bool>())
+    EXPECT_LE(worst, 2e-6);
+
+  // The catalog: one tile per cluster, with the report's counts.
+  std::vector<std::size_t> catalog_sizes;
+  std::ifstream catalog_in(catalog_path);
+  if(catalog_ext == "json")
+  {
+    const nlohmann::json catalog = nlohmann::json::parse(catalog_in);
+    for(const auto& tile : catalog) catalog_sizes.push_back(tile["instances"].get<std::size_t>());
+  }
+  else
+  {
+    std::string line;
+    std::getline(catalog_in, line);
+    EXPECT_EQ(csv_cells(line)[1], "instances");
+    while(std::getline(catalog_in, line)) catalog_sizes.push_back(std::stoul(csv_cells(line)[1]));
+  }
+  EXPECT_EQ(catalog_sizes, sizes);
+}
+
+// Runs with `arguments`; expects exit code 2, a message naming `expected`,
+// and no file in `dir`.
+void expect_refused(const fs::path& dir, const std::string& arguments, const std::string& expected)
+{
+  const Run_result r = run(arguments);
+  EXPECT_EQ(r.exit_code, 2) << r.output;
+  EXPECT_NE(r.output.find("error"), std::string::npos) << r.output;
+  EXPECT_NE(r.output.find(expected), std::string::npos) << r.output;
+  std::vector<std::string> created;
+  for(const auto& entry : fs::directory_iterator(dir))
+    if(entry.path().filename() != "garbage.off" && entry.path().filename() != "empty.obj")
+      created.push_back(entry.path().filename().string());
+  EXPECT_TRUE(created.empty()) << "created " << created.front();
+}
+
+} // namespace
+
+TEST(CommandLine, DeBeersGinzaEndToEnd) { check_run_on("de_beers_ginza.off", 48, "csv"); }
+
+TEST(CommandLine, SwissReTowerEndToEnd) { check_run_on("swiss_re.off", 24, "json"); }
+
+TEST(CommandLine, HelpExitsZero)
+{
+  const Run_result r = run("--help");
+  EXPECT_EQ(r.exit_code, 0);
+  EXPECT_NE(r.output.find("--catalog"), std::string::npos);
+}
+
+TEST(CommandLine, BadInputsExitWithCodeTwoAndWriteNothing)
+{
+  const fs::path dir = scratch("bad");
+  const std::string out = " -o " + (dir / "out.ply").string() + " --report " +
+                          (dir / "r.json").string();
+  const std::string saddle = data_dir + "/monkey_saddle.off";
+  std::ofstream(dir / "garbage.off") << "OFF\n3 1 0\n0 0 zero\n1 0 0\nnonsense\n";
+
+  expect_refused(dir, (dir / "missing.off").string() + " -k 3" + out, "no such file");
+  expect_refused(dir, (dir / "garbage.off").string() + " -k 3" + out, "not a readable polygon mesh");
+  expect_refused(dir, data_dir + "/mushroom.off -k 3" + out, "only quad meshes");
+  expect_refused(dir, saddle + " -k 0" + out, "-k must be at least 1");
+  expect_refused(dir, saddle + " -k 101" + out, "more than the 100 faces");
+  expect_refused(dir, saddle + " -k 3 --frobnicate" + out, "frobnicate");
+  expect_refused(dir, saddle + " -k 3 --solver magic" + out, "unknown solver");
+  expect_refused(dir, saddle + " -k 3 -o " + (dir / "out.stl").string(), ".ply, .off or .obj");
+  expect_refused(dir, saddle + " -k 3 -o " + (dir / "no_such_dir" / "out.ply").string(),
+                 "cannot create");
+}

@@ -1,0 +1,174 @@
+// The one-call function and the step-by-step class.
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+
+#include <CGAL/Tilable_surfaces/make_k_set_tilable.h>
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include <set>
+#include <string>
+#include <vector>
+
+namespace TS = CGAL::Tilable_surfaces;
+namespace TSP = CGAL::Tilable_surfaces::parameters;
+typedef CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> Mesh;
+
+namespace {
+
+Mesh read(const std::string& name)
+{
+  Mesh mesh;
+  EXPECT_TRUE(CGAL::IO::read_polygon_mesh(std::string(CGAL_TILABLE_SURFACES_TEST_DATA) + "/" + name, mesh));
+  return mesh;
+}
+
+std::vector<Mesh::Point> points(const Mesh& m)
+{
+  return std::vector<Mesh::Point>(m.points().begin(), m.points().end());
+}
+
+// Congruence measured here, independently of the package's measurement: for
+// each cluster, Eigen::umeyama (no scaling) of every instance onto the first
+// one; the largest corner deviation over the mean edge length.
+template <typename ClusterMap, typename OrientationMap>
+double congruence_by_umeyama(const Mesh& m, ClusterMap cluster, OrientationMap orientation)
+{
+  std::map<int, Eigen::Matrix<double, 3, 4> > first;
+  double worst = 0;
+  for(auto f : faces(m))
+  {
+    const TS::Quad q = TS::face_quad(f, m, TS::Quad_orientation(int(get(orientation, f))));
+    Eigen::Matrix<double, 3, 4> x;
+    for(int i = 0; i < 4; ++i) x.col(i) = q[i];
+    const auto it = first.emplace(int(get(cluster, f)), x).first;
+    const Eigen::Matrix4d T = Eigen::umeyama(it->second, x, false);
+    const Eigen::Matrix<double, 3, 4> fitted =
+      (T.topLeftCorner<3, 3>() * it->second).colwise() + T.topRightCorner<3, 1>();
+    worst = (std::max)(worst, (fitted - x).colwise().norm().maxCoeff());
+  }
+  return worst / TS::mean_edge_length(m);
+}
+
+} // namespace
+
+TEST(MakeKSetTilable, OneTilePerFaceDoesNotMoveTheMesh)
+{
+  Mesh mesh = read("de_beers_ginza.off");
+  const auto before = points(mesh);
+  const TS::K_set_tilable_result r =
+    TS::make_k_set_tilable(mesh, TSP::number_of_tiles(int(mesh.number_of_faces())));
+  EXPECT_EQ(points(mesh), before) << "bit-identical";
+  EXPECT_TRUE(r.is_tilable());
+  EXPECT_LT(r.optimization.measure.congruence_error, 1e-13) << "round-off of the rigid fits only";
+  EXPECT_EQ(r.tiles.size(), mesh.number_of_faces());
+}
+
+TEST(MakeKSetTilable, FillsTheMapsAndTheResultIsCongruentByAnIndependentFit)
+{
+  Mesh mesh = read("de_beers_ginza.off");
+  auto cluster = mesh.add_property_map<Mesh::Face_index, int>("f:c", -1).first;
+  auto orientation = mesh.add_property_map<Mesh::Face_index, unsigned char>("f:o", 99).first;
+  const int k = 48;
+  const TS::K_set_tilable_result r = TS::make_k_set_tilable(
+    mesh, TSP::number_of_tiles(k).face_cluster_map(cluster).face_orientation_map(orientation));
+
+  std::set<int> ids;
+  std::size_t instances = 0;
+  for(auto f : faces(mesh))
+  {
+    ids.insert(cluster[f]);
+    EXPECT_LE(int(orientation[f]), 7);
+  }
+  EXPECT_EQ(ids.size(), std::size_t(k));
+  EXPECT_EQ(*ids.begin(), 0);
+  EXPECT_EQ(*ids.rbegin(), k - 1);
+  ASSERT_EQ(r.tiles.size(), std::size_t(k));
+  for(const auto& t : r.tiles) instances += t.instance_count;
+  EXPECT_EQ(instances, mesh.number_of_faces());
+
+  ASSERT_TRUE(r.is_tilable()) << r.optimization.measure.congruence_error;
+  EXPECT_LE(congruence_by_umeyama(mesh, cluster, orientation), 2e-6);
+  EXPECT_GT(r.total_time, 0.0);
+  EXPECT_GE(r.total_time, r.clustering_time);
+}
+
+TEST(MakeKSetTilable, ErrorsLeaveTheMeshAndTheMapsUntouched)
+{
+  Mesh mesh = read("monkey_saddle.off");
+  auto cluster = mesh.add_property_map<Mesh::Face_index, int>("f:c", -7).first;
+  auto orientation = mesh.add_property_map<Mesh::Face_index, int>("f:o", -7).first;
+  const auto before = points(mesh);
+  for(int k : {0, 101})
+    EXPECT_THROW(TS::make_k_set_tilable(mesh, TSP::number_of_tiles(k)
+                                                .face_cluster_map(cluster)
+                                                .face_orientation_map(orientation)),
+                 TS::Invalid_input) << k;
+  EXPECT_THROW(TS::make_k_set_tilable(mesh, TSP::number_of_tiles(3)
+                                              .face_cluster_map(cluster)
+                                              .distance_weight(-1.0)),
+               TS::Invalid_input);
+  EXPECT_EQ(points(mesh), before);
+  for(auto f : faces(mesh))
+  {
+    EXPECT_EQ(cluster[f], -7);
+    EXPECT_EQ(orientation[f], -7);
+  }
+}
+
+TEST(KSetTilableSurface, EditingReportsTheDegreeOfFlexibilityOfTheEditedClustering)
+{
+  Mesh mesh = read("de_beers_ginza.off");
+  TS::K_set_tilable_surface<Mesh> surface(mesh);
+  EXPECT_THROW(surface.optimize(), TS::Invalid_input) << "no clustering yet";
+  const TS::Clustering_result& c = surface.cluster(TSP::number_of_tiles(30));
+  EXPECT_EQ(surface.number_of_clusters(), 30u);
+  EXPECT_EQ(surface.degree_of_flexibility(), c.degree_of_flexibility);
+
+  const std::size_t merged = surface.merge_clusters(0, 1);
+  EXPECT_EQ(surface.number_of_clusters(), 29u);
+  EXPECT_EQ(merged, surface.degree_of_flexibility());
+  const std::size_t split = surface.split_cluster(0);
+  EXPECT_EQ(surface.number_of_clusters(), 30u);
+  EXPECT_EQ(split, surface.degree_of_flexibility());
+  EXPECT_EQ(surface.retag_orientations(), surface.degree_of_flexibility());
+  std::set<int> ids;
+  for(auto f : faces(mesh)) ids.insert(get(surface.face_cluster_map(), f));
+  EXPECT_EQ(ids.size(), 30u);
+
+  const TS::Optimization_result& o = surface.optimize();
+  // optimize() measures against the positions it started from, which are the
+  // input here: a fresh measurement against the kept input agrees.
+  const TS::Tilability_measure m = surface.measure();
+  EXPECT_NEAR(m.congruence_error, o.measure.congruence_error, 1e-12);
+  EXPECT_NEAR(m.max_displacement, o.measure.max_displacement, 1e-12);
+  EXPECT_NEAR(m.max_approximation_error, o.measure.max_approximation_error, 1e-12);
+  EXPECT_LE(congruence_by_umeyama(mesh, surface.face_cluster_map(), surface.face_orientation_map()),
+            2 * m.congruence_error + 1e-12);
+}
+
+TEST(KSetTilableSurface, SetClusteringChecksTheMaps)
+{
+  Mesh mesh = read("monkey_saddle.off");
+  TS::K_set_tilable_surface<Mesh> surface(mesh);
+  std::map<Mesh::Face_index, int> cluster, orientation;
+  for(auto f : faces(mesh)) { cluster[f] = 0; orientation[f] = 0; }
+  cluster[Mesh::Face_index(5)] = 2;  // id 1 unused
+  EXPECT_THROW(surface.set_clustering(boost::make_assoc_property_map(cluster),
+                                      boost::make_assoc_property_map(orientation)),
+               TS::Invalid_input);
+  EXPECT_FALSE(surface.is_clustered());
+  cluster[Mesh::Face_index(5)] = 1;
+  orientation[Mesh::Face_index(7)] = 8;
+  EXPECT_THROW(surface.set_clustering(boost::make_assoc_property_map(cluster),
+                                      boost::make_assoc_property_map(orientation)),
+               TS::Invalid_input);
+  orientation[Mesh::Face_index(7)] = 4;
+  surface.set_clustering(boost::make_assoc_property_map(cluster),
+                         boost::make_assoc_property_map(orientation));
+  EXPECT_EQ(surface.number_of_clusters(), 2u);
+  EXPECT_EQ(get(surface.face_orientation_map(), Mesh::Face_index(7)), 4);
+}

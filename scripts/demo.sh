@@ -1,6 +1,22 @@
 #!/usr/bin/env bash
-# README's first command: set up, build, and run the main job on a bundled surface.
+# README's first command: set up, build, and make the bundled seashell 60-set
+# tilable, with its report, tile catalog and pictures in out/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/setup.sh
-./build/bin/quad_shape_statistics examples/Tilable_surfaces/data/seashell.off
+# The pictures need a headless renderer: Debian's f3d under Xvfb.
+bash scripts/setup.sh --packages-only f3d xvfb xauth
+
+mkdir -p out
+./build/bin/k_set_tilable examples/Tilable_surfaces/data/seashell.off -k 60 \
+  -o out/seashell_k60.ply --report out/seashell_k60_report.json \
+  --catalog out/seashell_k60_tiles.csv --components out/seashell_k60_edges.ply
+bash scripts/render.sh out/seashell_k60.ply out/seashell_k60.png
+bash scripts/render.sh out/seashell_k60_edges.ply out/seashell_k60_edges.png
+
+echo
+echo "demo: wrote"
+for f in out/seashell_k60.ply out/seashell_k60_report.json out/seashell_k60_tiles.csv \
+         out/seashell_k60_edges.ply out/seashell_k60.png out/seashell_k60_edges.png; do
+  echo "  $(pwd)/$f"
+done

@@ -5,10 +5,19 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(g++ cmake make libcgal-dev libeigen3-dev libboost-dev libboost-program-options-dev
-          libgtest-dev nlohmann-json3-dev
-          # optional, used when present: parallel loops and the CHOLMOD sparse solver
-          libtbb-dev libsuitesparse-dev)
+# Usage: setup.sh                          install the build's packages, configure, build
+#        setup.sh --packages-only P...       install the Debian packages P only
+packages_only=false
+if [ "${1:-}" = "--packages-only" ]; then
+  packages_only=true
+  shift
+  packages=("$@")
+else
+  packages=(g++ cmake make libcgal-dev libeigen3-dev libboost-dev libboost-program-options-dev
+            libgtest-dev nlohmann-json3-dev
+            # optional, used when present: parallel loops and the CHOLMOD sparse solver
+            libtbb-dev libsuitesparse-dev)
+fi
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
@@ -20,6 +29,7 @@ if [ ${#missing[@]} -gt 0 ]; then
   DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
 
+$packages_only && exit 0
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > build-configure.log 2>&1 \
   || { cat build-configure.log; exit 1; }
 jobs=$(nproc 2>/dev/null || echo 2)

@@ -7,6 +7,8 @@
 
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 
+#include "csv_cells.h"
+
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
@@ -69,14 +71,6 @@ std::vector<std::vector<std::size_t> > face_lists(const Mesh& m)
   return lists;
 }
 
-std::vector<std::string> csv_cells(const std::string& line)
-{
-  std::vector<std::string> cells;
-  std::stringstream in(line);
-  std::string cell;
-  while(std::getline(in, cell, ',')) cells.push_back(cell);
-  return cells;
-}
 
 void check_run_on(const std::string& surface, int k, const std::string& catalog_ext)
 {

@@ -14,7 +14,9 @@
 #include <tbb/global_control.h>
 #endif
 
+#include <algorithm>
 #include <cmath>
+#include <limits>
 #include <map>
 #include <queue>
 #include <random>
@@ -125,8 +127,21 @@ std::size_t number_of_clusters(const Mesh& m, const Maps& mp)
   return ids.size();
 }
 
-// Every face's orientation minimises the dissimilarity to its S-quad.
-void expect_best_orientations(const Mesh& m, const Maps& mp, const TS::Clustering_result& r)
+// sum_i |q_o(i) - T(p_i)|, T the best rigid fit of p onto q relabelled by o.
+double sum_of_distances(const TS::Quad& p, const TS::Quad& q, TS::Quad_orientation o,
+                        bool allow_mirror = false)
+{
+  const TS::Quad t = TS::reoriented(q, o);
+  const TS::Rigid_fit fit = TS::best_rigid_fit(p, t, allow_mirror);
+  double sum = 0;
+  for(int i = 0; i < 4; ++i) sum += (t[i] - fit(p[i])).norm();
+  return sum;
+}
+
+// Every face's orientation minimises its dissimilarity to its S-quad, ties
+// allowed: ties within tau = 0.01 x mean edge length, the similarity
+// threshold (see cluster_quads()).
+void expect_admissible_orientations(const Mesh& m, const Maps& mp, const TS::Clustering_result& r)
 {
   const double scale = TS::mean_edge_length(m);
   for(Face f : faces(m))
@@ -136,11 +151,8 @@ void expect_best_orientations(const Mesh& m, const Maps& mp, const TS::Clusterin
     // Best over the 8 correspondences (quad_shape.h's reference implementation)
     // against the sum of corner distances under the tagged correspondence.
     const double best = TS::best_match(s, q).dissimilarity;
-    const TS::Quad t = TS::reoriented(q, TS::Quad_orientation(mp.orientation[f]));
-    const TS::Rigid_fit fit = TS::best_rigid_fit(s, t);
-    double tagged = 0;
-    for(int i = 0; i < 4; ++i) tagged += (t[i] - fit(s[i])).norm();
-    EXPECT_LE(tagged, best + 1e-9 * scale) << "face " << int(f);
+    const double tagged = sum_of_distances(s, q, TS::Quad_orientation(mp.orientation[f]));
+    EXPECT_LE(tagged, best + 0.01 * scale + 1e-9 * scale) << "face " << int(f);
   }
 }
 
@@ -148,6 +160,10 @@ void expect_best_orientations(const Mesh& m, const Maps& mp, const TS::Clusterin
 
 TEST(FastMatch, SameAsBestMatch)
 {
+  // Random quads, and the cases where the rotation is least well determined:
+  // near-planar quads (rank-2 cross-covariance) and near-symmetric ones
+  // (rectangles, squares, kites: correspondences nearly tie), each against a
+  // randomly moved, slightly perturbed copy or an unrelated quad.
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(-1, 1);
   auto random_quad = [&] {
@@ -155,16 +171,68 @@ TEST(FastMatch, SameAsBestMatch)
     for(auto& p : q) p = Eigen::Vector3d(u(rng), u(rng), u(rng));
     return q;
   };
+  auto perturbed = [&](TS::Quad q, double eps) {
+    for(auto& p : q) p += eps * Eigen::Vector3d(u(rng), u(rng), u(rng));
+    return q;
+  };
+  auto moved = [&](const TS::Quad& q) {
+    const Eigen::Matrix3d r =
+      Eigen::Quaterniond(Eigen::Vector4d(u(rng), u(rng), u(rng), u(rng)).normalized())
+        .toRotationMatrix();
+    const Eigen::Vector3d t(u(rng), u(rng), u(rng));
+    TS::Quad m;
+    for(int i = 0; i < 4; ++i) m[i] = r * q[i] + t;
+    return m;
+  };
+  auto special_quad = [&](int kind) {
+    const double a = 1 + u(rng), b = 1 + u(rng), c = 0.5 * (1 + u(rng));
+    switch(kind)
+    {
+      case 0: return TS::Quad{{{0, 0, 0}, {a, 0, 0}, {a, b, 0}, {0, b, 0}}};   // rectangle
+      case 1: return TS::Quad{{{0, 0, 0}, {a, 0, 0}, {a, a, 0}, {0, a, 0}}};   // square
+      case 2: return TS::Quad{{{0, 0, 0}, {a, c, 0}, {0, b, 0}, {-a, c, 0}}};  // kite
+      default: return TS::Quad{{{0, 0, 0}, {a, 0, c}, {a, b, 0}, {0, b, c}}};  // skew, symmetric
+    }
+  };
+  std::vector<std::pair<TS::Quad, TS::Quad> > cases;
+  for(int i = 0; i < 300; ++i)
+    cases.push_back({random_quad(), random_quad()});
+  for(double eps : {0.0, 1e-12, 1e-8, 1e-4, 1e-2})
+    for(int i = 0; i < 200; ++i)
+    {
+      const TS::Quad p = i % 2 ? special_quad(i % 8 / 2) : perturbed(random_quad(), 0);
+      TS::Quad flat = p;
+      for(auto& x : flat) x.z() *= eps;  // near-planar version of a random quad
+      const TS::Quad base = i % 2 ? p : flat;
+      cases.push_back({perturbed(base, eps), moved(perturbed(base, eps))});
+      cases.push_back({perturbed(base, eps), random_quad()});
+    }
   for(TS::Orientation_policy policy :
       {TS::PROPER_RIGID_MOTIONS, TS::NO_TURNED_OVER_PANELS, TS::ALLOW_MIRRORED_PANELS})
-    for(int i = 0; i < 300; ++i)
+    for(const auto& c : cases)
     {
-      const TS::Quad p = random_quad(), q = random_quad();
-      const TS::Quad_match a = TS::best_match(p, q, policy);
-      const TS::Quad_match b = TS::internal::fast_best_match(p, q, policy);
-      EXPECT_NEAR(a.dissimilarity, b.dissimilarity, 1e-12);
-      EXPECT_EQ(a.orientation, b.orientation);
-      EXPECT_TRUE(a.fit.rotation.isApprox(b.fit.rotation, 1e-9));
+      const TS::Quad_match a = TS::best_match(c.first, c.second, policy);
+      const TS::Quad_match b = TS::internal::fast_best_match(c.first, c.second, policy);
+      ASSERT_NEAR(a.dissimilarity, b.dissimilarity, 1e-9);
+      // The fit found must achieve the dissimilarity found.
+      const TS::Quad t = TS::reoriented(c.second, b.orientation);
+      double sum = 0;
+      for(int i = 0; i < 4; ++i) sum += (t[i] - b.fit(c.first[i])).norm();
+      ASSERT_NEAR(sum, b.dissimilarity, 1e-9);
+      EXPECT_NEAR(b.fit.rotation.determinant(), b.fit.is_mirrored ? -1.0 : 1.0, 1e-12);
+      // Same correspondence and motion unless two correspondences tie.
+      double second_best = std::numeric_limits<double>::max();
+      for(int o = 0; o < (policy == TS::NO_TURNED_OVER_PANELS ? 4 : 8); ++o)
+        if(o != a.orientation.index())
+          second_best = (std::min)(second_best,
+            sum_of_distances(c.first, c.second, TS::Quad_orientation(o),
+                             policy == TS::ALLOW_MIRRORED_PANELS));
+      if(second_best > a.dissimilarity + 1e-6)
+      {
+        EXPECT_EQ(a.orientation, b.orientation);
+        if(a.dissimilarity > 1e-6)
+          EXPECT_TRUE(a.fit.rotation.isApprox(b.fit.rotation, 1e-6));
+      }
     }
 }
 
@@ -178,8 +246,12 @@ TEST(ClusterQuads, FlatGridOfEqualRectanglesIsOneCluster)
   EXPECT_EQ(r.cluster_sizes[0], 24u);
   // The threshold clustering already finds a single shape.
   EXPECT_EQ(r.number_of_initial_clusters, 1u);
-  EXPECT_EQ(r.degree_of_flexibility, 2u);
-  EXPECT_EQ(brute_force_dof(m, mp, 1), 2u);
+  // Every orientation that maps the long edges to the long edges fits exactly;
+  // tagged in a checkerboard of 180-degree turns, every interior edge puts the
+  // same S-quad edge on both sides (a self-loop), so the 4 S-quad edges stay
+  // apart: DOF 4 = 4K, the maximum (tagging all faces alike gives only 2).
+  EXPECT_EQ(r.degree_of_flexibility, 4u);
+  EXPECT_EQ(brute_force_dof(m, mp, 1), 4u);
   EXPECT_NEAR(r.total_weight, 0.0, 1e-9);
   // The S-quad is the 2 x 1 rectangle.
   const auto e = TS::edge_lengths(r.s_quads[0]);
@@ -187,6 +259,27 @@ TEST(ClusterQuads, FlatGridOfEqualRectanglesIsOneCluster)
   std::sort(sorted.begin(), sorted.end());
   EXPECT_NEAR(sorted[0], 1.0, 1e-9);
   EXPECT_NEAR(sorted[3], 2.0, 1e-9);
+}
+
+TEST(ClusterQuads, OrientationsChosenForFlexibilityOnSymmetricTiles)
+{
+  // Squares at K = 1, and rectangles without turned-over panels: as above,
+  // a checkerboard of 180-degree turns makes every interior edge a self-loop,
+  // DOF 4 = 4K, while each face's first best orientation alone (ties broken
+  // by index) gives 2.
+  for(double h : {2.0, 1.0})
+    for(TS::Orientation_policy policy : {TS::PROPER_RIGID_MOTIONS, TS::NO_TURNED_OVER_PANELS})
+    {
+      Mesh m = grid(5, 4, 2, h);
+      Maps mp = maps(m);
+      const TS::Clustering_result r = TS::cluster_quads(
+        m, TS::parameters::number_of_tiles(1).face_cluster_map(mp.cluster)
+             .face_orientation_map(mp.orientation).orientation_policy(policy));
+      EXPECT_EQ(r.degree_of_flexibility, 4u) << "h " << h << ", policy " << int(policy);
+      EXPECT_EQ(brute_force_dof(m, mp, 1), 4u);
+      if(policy == TS::NO_TURNED_OVER_PANELS)
+        for(Face f : faces(m)) EXPECT_LT(mp.orientation[f], 4);
+    }
 }
 
 TEST(ClusterQuads, CongruentQuadsAreSplitWhenKExceedsTheShapes)
@@ -227,7 +320,7 @@ struct Paper_case { const char* surface; std::vector<std::size_t> ks; };
 
 class PaperSurfaces : public ::testing::TestWithParam<Paper_case> {};
 
-TEST_P(PaperSurfaces, ExactlyKClustersWithBestOrientations)
+TEST_P(PaperSurfaces, ExactlyKClustersWithAdmissibleOrientations)
 {
   Mesh m = read(GetParam().surface);
   Maps mp = maps(m);
@@ -238,7 +331,7 @@ TEST_P(PaperSurfaces, ExactlyKClustersWithBestOrientations)
     ASSERT_EQ(r.cluster_sizes.size(), k);
     for(std::size_t s : r.cluster_sizes) EXPECT_GT(s, 0u);
     EXPECT_EQ(r.degree_of_flexibility, brute_force_dof(m, mp, k));
-    expect_best_orientations(m, mp, r);
+    expect_admissible_orientations(m, mp, r);
     std::cout << "[ DOF      ] " << GetParam().surface << " K=" << k << " DOF="
               << r.degree_of_flexibility << " (N=" << r.number_of_initial_clusters << ", "
               << r.choice_reason << ")" << std::endl;

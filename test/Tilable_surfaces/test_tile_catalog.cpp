@@ -1,6 +1,8 @@
 // The tile catalog: every derived number checked against a hand-made tile.
 #include <CGAL/Tilable_surfaces/IO/tile_catalog.h>
 
+#include "csv_cells.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -25,14 +27,6 @@ TS::IO::Tile lifted_square(double h)
   return t;
 }
 
-std::vector<std::string> split(const std::string& line)
-{
-  std::vector<std::string> cells;
-  std::stringstream in(line);
-  std::string cell;
-  while(std::getline(in, cell, ',')) cells.push_back(cell);
-  return cells;
-}
 
 } // namespace
 
@@ -46,7 +40,7 @@ TEST(TileCatalog, CsvHasTheHandComputedValues)
   std::getline(in, header);
   std::getline(in, row);
   std::getline(in, flat);
-  const std::vector<std::string> names = split(header), cells = split(row);
+  const std::vector<std::string> names = csv_cells(header), cells = csv_cells(row);
   ASSERT_EQ(names.size(), 23u);
   ASSERT_EQ(cells.size(), names.size());
   auto value = [&](const std::string& name) {
@@ -67,7 +61,7 @@ TEST(TileCatalog, CsvHasTheHandComputedValues)
   EXPECT_DOUBLE_EQ(value("signed_volume"), h / 6);
   EXPECT_DOUBLE_EQ(value("planarity"), h);
   EXPECT_EQ(value("worst_deviation"), 2.5e-7);
-  EXPECT_EQ(std::stod(split(flat)[names.size() - 2]), 0.0) << "a flat tile has planarity 0";
+  EXPECT_EQ(std::stod(csv_cells(flat)[names.size() - 2]), 0.0) << "a flat tile has planarity 0";
 }
 
 TEST(TileCatalog, JsonParsesBackWithTheSameNumbers)

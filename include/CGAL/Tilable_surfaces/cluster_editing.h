@@ -205,9 +205,10 @@ std::size_t split_cluster(const PolygonMesh& pm, std::size_t c, const CGAL_NP_CL
 
 /// \ingroup PkgTilableSurfacesRef
 /// Recomputes the S-quad of every cluster (Procrustes mean) and re-tags every
-/// face with the orientation that best matches it, as `cluster_quads()` does
-/// at its end; the ids do not change. Returns the degree of flexibility of
-/// the rebuilt edge-sharing graph.
+/// face with an admissible orientation chosen for flexibility, as
+/// `cluster_quads()` does at its end (tau from `similarity_threshold`,
+/// default 0.01, times the mean edge length); the ids do not change. Returns
+/// the degree of flexibility of the rebuilt edge-sharing graph.
 ///
 /// \throws Invalid_input if the maps or the mesh are invalid; the maps are not
 /// modified then.
@@ -215,8 +216,13 @@ template <class PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 std::size_t retag_orientations(const PolygonMesh& pm, const CGAL_NP_CLASS& np)
 {
   internal::Editable_clustering<PolygonMesh, CGAL_NP_CLASS> e(pm, np);
-  e.orientation =
-    internal::cluster_shapes(e.quads, e.label, e.k, internal::orientation_policy(np)).orientation;
+  const Orientation_policy policy = internal::orientation_policy(np);
+  const double tau = parameters::choose_parameter(
+    parameters::get_parameter(np, CGAL::Tilable_surfaces::internal_np::similarity_threshold), 0.01);
+  const internal::Cluster_shapes shapes = internal::cluster_shapes(e.quads, e.label, e.k, policy);
+  e.orientation = internal::flexible_orientations(pm, e.fim, e.quads, e.label, shapes.s_quads,
+                                                  shapes.orientation, policy,
+                                                  tau * mean_edge_length(pm, np));
   e.write(pm, np);
   return internal::edge_sharing_graph(pm, e.fim, e.label, e.orientation, e.k)
            .degree_of_flexibility();

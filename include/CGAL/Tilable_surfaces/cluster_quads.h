@@ -16,6 +16,7 @@
 #include <CGAL/Tilable_surfaces/internal/Clustering/beam_search.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/cluster_analysis.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/descriptor_index.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/flexible_orientations.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/initial_clustering.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/kmeans.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/merge_costs.h>
@@ -92,7 +93,8 @@ struct Clustering_result
   /// Whether `cluster_weights` are exact (exact path) or estimates.
   bool weights_are_exact = true;
   /// The degree of flexibility of the returned clustering, with the returned
-  /// orientations: the number of components of its edge-sharing graph.
+  /// orientations (chosen for flexibility among admissible ones, see
+  /// `cluster_quads()`): the number of components of its edge-sharing graph.
   std::size_t degree_of_flexibility = 0;
   /// The number N of clusters of the threshold clustering, and the absolute
   /// threshold that produced it (the descriptor path doubles the threshold until
@@ -188,8 +190,11 @@ inline void split_to(std::size_t k, const std::vector<Quad>& quads,
 ///    S(Ci u Cj) - S(Ci) - S(Cj), the sum of the cross dissimilarities
 ///    (exact path: from the affinity matrix; descriptor path: the same formula
 ///    with squared descriptor distances, in closed form from each cluster's
-///    size, mean and scatter). From every configuration of the beam, each
-///    cluster proposes its merge with its cheapest partner (and, with
+///    size, mean and scatter). From every configuration of the beam, every
+///    pair of clusters is proposed while at most 128 remain (the paper's
+///    exhaustive search; proposals whose score cannot enter the beam are cut
+///    early), and above that each cluster proposes its merge with its
+///    cheapest partner (and, with
 ///    `use_auto_merge`, every pair of clusters whose S-quad edges lie in the
 ///    same 4 components of the edge-sharing graph, which keeps the degree of
 ///    flexibility). Each proposal gets the score
@@ -204,8 +209,17 @@ inline void split_to(std::size_t k, const std::vector<Quad>& quads,
 ///    `random_seed`, on the 7 descriptor components); the configuration with
 ///    the lowest score is returned (on a tie, the first in the pool).
 /// -# <i>S-quads and orientations</i>: each cluster's S-quad is the Procrustes
-///    mean of its instances; each face gets the orientation that minimises its
-///    dissimilarity to its S-quad (`best_match()`).
+///    mean of its instances. Each face is tagged with an <i>admissible</i>
+///    orientation: a near-tie, whose dissimilarity to its S-quad exceeds the
+///    best one (`best_match()`) by at most tau. Among those, the tagging maximises the degree of
+///    flexibility (cluster weights do not depend on orientations): a local
+///    search re-tags one face at a time, keeping changes that raise the DOF,
+///    or else lower the number of mesh edges linking two different S-quad
+///    edges, or else lower the face's dissimilarity; it starts from the best
+///    orientations and from orientations propagated across each cluster (the
+///    neighbour turned over the shared edge, or translated across it), and
+///    the best result is kept. Symmetric quads benefit most: a grid of equal
+///    rectangles at K = 1 gets DOF 4 instead of 2.
 ///
 /// Clusters are numbered 0..K-1 by their first face in face-index order.
 /// The result is deterministic for a given `random_seed`, whatever the number of
@@ -450,7 +464,7 @@ Clustering_result cluster_quads(const PolygonMesh& pm, const CGAL_NP_CLASS& np)
 
   // 5. S-quads, orientations, weights, degree of flexibility.
   const std::vector<std::size_t>& label = labels[result.chosen_candidate];
-  const internal::Cluster_shapes shapes = internal::cluster_shapes(quads, label, k, policy);
+  internal::Cluster_shapes shapes = internal::cluster_shapes(quads, label, k, policy);
   result.s_quads = shapes.s_quads;
   result.cluster_sizes.assign(k, 0);
   result.cluster_weights.assign(k, 0.0);
@@ -468,6 +482,9 @@ Clustering_result cluster_quads(const PolygonMesh& pm, const CGAL_NP_CLASS& np)
       result.cluster_weights[c] *= double(result.cluster_sizes[c] - 1);
   }
   for(double w : result.cluster_weights) result.total_weight += w;
+  shapes.orientation = internal::flexible_orientations(pm, fim, quads, label, shapes.s_quads,
+                                                      shapes.orientation, policy,
+                                                      relative_threshold * length);
   result.degree_of_flexibility =
     internal::edge_sharing_graph(pm, fim, label, shapes.orientation, k).degree_of_flexibility();
 

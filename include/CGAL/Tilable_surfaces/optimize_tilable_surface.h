@@ -40,7 +40,12 @@ enum Solver_type
   /// the displacement), subject to equal edge lengths per edge-sharing
   /// component and equal diagonals and signed volume per cluster as *hard*
   /// constraints: Gauss-Newton SQP steps on the regularized sparse KKT system
-  /// with multiplier updates and a line search on the augmented Lagrangian.
+  /// with multiplier updates and a line search on an l2 merit function, then,
+  /// once the constraint residuals stop decreasing, a Levenberg-Marquardt
+  /// projection onto the constraints in the same metric. If that ends short
+  /// of `congruence_tolerance`, it is run again from the input with the exact
+  /// Lagrangian Hessian (with inertia control and second-order corrections)
+  /// within the remaining iterations, and the better result is kept.
   /// Only the ratio mu2 / mu1 matters; mu3..mu5 are not used.
   CONSTRAINED_GAUSS_NEWTON,
   /// The paper's method, as a reference: Polak-Ribiere nonlinear conjugate
@@ -56,8 +61,12 @@ enum Solver_type
 struct Default_optimization_visitor
 {
   /// Called after iteration `iteration` (from 1) with the congruence error
-  /// measured at that iteration (method notes §1) and the solver's objective
-  /// (on the normalized input). Returning `false` stops the solver.
+  /// (method notes §1) and the solver's objective (on the normalized input).
+  /// Returning `false` stops the solver. The default solver measures the
+  /// congruence error only when it may meet the tolerance and every 10
+  /// iterations; in between it passes its estimate, the largest constraint
+  /// residual in mean edge lengths. `Optimization_result::converged` is
+  /// always decided on the measured value.
   bool iteration(int /*iteration*/, double /*congruence_error*/, double /*objective*/)
   {
     return true;
@@ -132,7 +141,7 @@ inline void check_parameter(bool ok, const std::string& what)
 ///     default 1e-9; conjugate gradient: stop when the relative decrease of
 ///     the energy is below it, default 1e-12 \cgalParamNEnd
 ///   \cgalParamNBegin{number_of_iterations} at most this many iterations,
-///     default 100 (Gauss-Newton) or 5000 (conjugate gradient) \cgalParamNEnd
+///     default 300 (Gauss-Newton) or 5000 (conjugate gradient) \cgalParamNEnd
 ///   \cgalParamNBegin{feature_angle} dihedral angle in degrees above which an
 ///     edge is a sharp feature left out of the fairness term, default 60 \cgalParamNEnd
 ///   \cgalParamNBegin{edge_is_constrained_map} feature edges, replacing the
@@ -181,7 +190,7 @@ Optimization_result optimize_tilable_surface(PolygonMesh& pm, const CGAL_NP_CLAS
   settings.convergence_tolerance =
     choose_parameter(get_parameter(np, TS_np::convergence_tolerance), gauss_newton ? 1e-9 : 1e-12);
   settings.max_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
-                                             gauss_newton ? 100 : 5000);
+                                             gauss_newton ? 300 : 5000);
 
   internal::check_parameter(solver == CONSTRAINED_GAUSS_NEWTON || solver == PAPER_CONJUGATE_GRADIENT,
                             "unknown solver");

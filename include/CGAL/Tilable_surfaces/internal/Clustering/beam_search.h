@@ -9,17 +9,29 @@
 //
 // A configuration groups the N initial clusters; group g keeps the id of one
 // of its initial clusters, and that cluster's leader quad labels its S-quad.
-// From each configuration of the beam with k groups, every group proposes its
-// merge with its cheapest partner (kept exactly up to date after every merge;
-// proposing only the globally cheapest merges loses much flexibility), plus, with auto-merge, the pairs of groups whose S-quad edges
-// lie in the same 4 components of the edge-sharing graph (merging them keeps
-// the degree of flexibility). Every proposal is scored
+// From each configuration of the beam with k groups, every pair of groups is
+// proposed when k <= 128, as in the paper's exhaustive search with early
+// termination (proposing fewer pairs misses flexible configurations: on the
+// TUNNEL at K = 12, clusters that follow the rings keep DOF 24 where the
+// cheapest-partner proposals end at 15). Above 128 groups, every group
+// proposes its merge with its cheapest partner (kept exactly up to date after
+// every merge; proposing only the globally cheapest merges loses much
+// flexibility). With auto-merge, the pairs of groups whose S-quad edges lie
+// in the same 4 components of the edge-sharing graph (merging them keeps the
+// degree of flexibility) are proposed too. Every proposal is scored
 //   score = W' / W1 + lambda * (D0 - D') / D0,
 // W' the configuration's weight after the merge, W1 the weight of the
 // single-cluster configuration, D' its degree of flexibility (from a tiny
 // union-find over the components the merge joins) and D0 the degree of
 // flexibility of the initial clustering. The `width` best distinct proposals
 // form the beam for k - 1 groups.
+//
+// Since a merge never raises the DOF, W' / W1 + lambda (D0 - D) / D0, D the
+// DOF before the merge, bounds a proposal's score from below. A proposal whose
+// bound exceeds the worst of the `width` best distinct proposals found so far
+// cannot enter the next beam and is not evaluated further; pairs are visited
+// by increasing cost, so the rest of them is skipped too.
+// The beam is the same as without this pruning.
 
 #include <CGAL/Tilable_surfaces/Edge_sharing_graph.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/fast_match.h>
@@ -30,8 +42,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <iostream>
-#include <map>
-#include <set>
+#include <limits>
+#include <unordered_map>
 #include <unordered_set>
 #include <utility>
 #include <vector>
@@ -126,8 +138,9 @@ public:
     while(beam.front().alive > k)
     {
       std::vector<Proposal> proposals;
+      Score_bound bound(m_width);
       for(std::size_t b = 0; b < beam.size(); ++b)
-        propose(beam[b], b, initial_dof, proposals);
+        propose(beam[b], b, initial_dof, bound, proposals);
       std::sort(proposals.begin(), proposals.end());
       std::vector<Proposal> chosen;
       std::unordered_set<std::uint64_t> seen;
@@ -176,7 +189,41 @@ private:
     }
   };
 
+  // The best score of each of the `width` best distinct partitions proposed so
+  // far; `value()` only decreases as proposals are added.
+  class Score_bound
+  {
+  public:
+    explicit Score_bound(std::size_t width) : m_width(width) {}
+
+    double value() const
+    {
+      return m_best.size() < m_width ? (std::numeric_limits<double>::max)()
+                                     : m_best.back().first;
+    }
+
+    void add(double score, std::uint64_t hash)
+    {
+      auto it = std::find_if(m_best.begin(), m_best.end(),
+                             [&](const std::pair<double, std::uint64_t>& b) { return b.second == hash; });
+      if(it != m_best.end())
+        it->first = (std::min)(it->first, score);
+      else if(m_best.size() < m_width)
+        m_best.push_back({score, hash});
+      else if(score < m_best.back().first)
+        m_best.back() = {score, hash};
+      std::sort(m_best.begin(), m_best.end());
+    }
+
+  private:
+    std::size_t m_width;
+    std::vector<std::pair<double, std::uint64_t> > m_best;  // increasing scores
+  };
+
   static std::size_t no_group() { return std::size_t(-1); }
+
+  // Up to this many groups, every pair is proposed (see the file comment).
+  static std::size_t exhaustive_limit() { return 128; }
 
   double cost(const State& s, std::size_t a, std::size_t b) const
   {
@@ -200,17 +247,22 @@ private:
     }
   }
 
+  static std::uint64_t pair_key(const std::pair<std::size_t, std::size_t>& p)
+  {
+    return (std::uint64_t(p.first) << 32) | std::uint64_t(p.second);
+  }
+
   // Template corner i of group a's S-quad <-> corner correspondence(i) of b's.
   Quad_orientation correspondence(std::size_t a, std::size_t b) const
   {
     const bool swapped = b < a;
     const std::pair<std::size_t, std::size_t> key = swapped ? std::make_pair(b, a)
                                                              : std::make_pair(a, b);
-    auto it = m_correspondences.find(key);
+    auto it = m_correspondences.find(pair_key(key));
     if(it == m_correspondences.end())
-      it = m_correspondences.emplace(key, fast_best_match(m_leaders[key.first],
-                                                          m_leaders[key.second],
-                                                          m_policy).orientation).first;
+      it = m_correspondences.emplace(pair_key(key), fast_best_match(m_leaders[key.first],
+                                                                    m_leaders[key.second],
+                                                                    m_policy).orientation).first;
     return swapped ? it->second.inverse() : it->second;
   }
 
@@ -220,14 +272,14 @@ private:
   {
     std::vector<std::pair<std::size_t, std::size_t> > missing;
     for(const auto& p : pairs)
-      if(!m_correspondences.count(p)) missing.push_back(p);
+      if(!m_correspondences.count(pair_key(p))) missing.push_back(p);
     std::vector<Quad_orientation> found(missing.size());
     parallel_for(missing.size(), [&](std::size_t i) {
       found[i] = fast_best_match(m_leaders[missing[i].first], m_leaders[missing[i].second],
                                  m_policy).orientation;
     });
     for(std::size_t i = 0; i < missing.size(); ++i)
-      m_correspondences.emplace(missing[i], found[i]);
+      m_correspondences.emplace(pair_key(missing[i]), found[i]);
   }
 
   // Number of components joined by merging `removed` into `kept`.
@@ -251,8 +303,16 @@ private:
     return joined;
   }
 
+  // The lowest score a merge of cost `cost` can get from `s` (see the file comment).
+  double score_lower_bound(const State& s, double cost, std::size_t initial_dof) const
+  {
+    return configuration_score(s.weight + cost, m_w1, m_lambda,
+                               s.graph.degree_of_flexibility(), initial_dof);
+  }
+
   void add_proposal(const State& s, std::size_t parent, std::size_t a, std::size_t b,
-                    std::size_t initial_dof, std::vector<Proposal>& out) const
+                    double cost, std::size_t initial_dof, Score_bound& bound,
+                    std::vector<Proposal>& out) const
   {
     const bool a_kept = s.faces[a] > s.faces[b] || (s.faces[a] == s.faces[b] && a < b);
     Proposal p;
@@ -260,37 +320,58 @@ private:
     p.kept = a_kept ? a : b;
     p.removed = a_kept ? b : a;
     p.correspondence = correspondence(p.kept, p.removed);
-    p.cost = cost(s, a, b);
+    p.cost = cost;
     const std::size_t dof = s.graph.degree_of_flexibility() -
                             joined_components(s, p.kept, p.removed, p.correspondence);
     p.score = configuration_score(s.weight + p.cost, m_w1, m_lambda, dof, initial_dof);
     p.hash = s.hash - mix64(s.key[a]) - mix64(s.key[b]) + mix64(s.key[a] + s.key[b]);
+    bound.add(p.score, p.hash);
     out.push_back(p);
   }
 
   void propose(const State& s, std::size_t parent, std::size_t initial_dof,
-               std::vector<Proposal>& out) const
+               Score_bound& bound, std::vector<Proposal>& out) const
   {
     std::vector<std::pair<double, std::pair<std::size_t, std::size_t> > > cheapest;
-    for(std::size_t c = 0; c < s.members.size(); ++c)
+    if(s.alive <= exhaustive_limit())
     {
-      if(s.members[c].empty())
-        continue;
-      const std::size_t d = s.partner[c];
-      if(d < c && s.partner[d] == c)
-        continue;  // mutual partners: proposed once
-      cheapest.push_back({s.partner_cost[c], {(std::min)(c, d), (std::max)(c, d)}});
+      for(std::size_t c = 0; c < s.members.size(); ++c)
+        if(!s.members[c].empty())
+          for(std::size_t d = c + 1; d < s.members.size(); ++d)
+            if(!s.members[d].empty())
+              cheapest.push_back({cost(s, c, d), {c, d}});
     }
+    else
+    {
+      for(std::size_t c = 0; c < s.members.size(); ++c)
+      {
+        if(s.members[c].empty())
+          continue;
+        const std::size_t d = s.partner[c];
+        if(d < c && s.partner[d] == c)
+          continue;  // mutual partners: proposed once
+        cheapest.push_back({s.partner_cost[c], {(std::min)(c, d), (std::max)(c, d)}});
+      }
+    }
+    // Only pairs that can still enter the beam are sorted.
+    cheapest.erase(std::remove_if(cheapest.begin(), cheapest.end(), [&](const auto& c) {
+                     return score_lower_bound(s, c.first, initial_dof) > bound.value();
+                   }), cheapest.end());
     std::sort(cheapest.begin(), cheapest.end());
     std::vector<std::pair<std::size_t, std::size_t> > pairs;
-    for(const auto& c : cheapest) pairs.push_back(c.second);
-    prefetch_correspondences(pairs);
-    std::set<std::pair<std::size_t, std::size_t> > proposed;
-    for(std::size_t i = 0; i < cheapest.size(); ++i)
+    for(const auto& c : cheapest)
     {
-      add_proposal(s, parent, cheapest[i].second.first, cheapest[i].second.second,
-                   initial_dof, out);
-      proposed.insert(cheapest[i].second);
+      if(score_lower_bound(s, c.first, initial_dof) > bound.value())
+        break;
+      pairs.push_back(c.second);
+    }
+    prefetch_correspondences(pairs);
+    for(std::size_t i = 0; i < pairs.size(); ++i)
+    {
+      if(score_lower_bound(s, cheapest[i].first, initial_dof) > bound.value())
+        break;
+      add_proposal(s, parent, pairs[i].first, pairs[i].second, cheapest[i].first,
+                   initial_dof, bound, out);
     }
     if(!m_auto_merge)
       return;
@@ -310,8 +391,10 @@ private:
     {
       if(patterns[i].first != patterns[i + 1].first)
         continue;
+      // A pair proposed above again has the same hash: the beam keeps one.
       const std::size_t a = patterns[i].second, b = patterns[i + 1].second;
-      if(proposed.count({a, b}))
+      const double c = cost(s, a, b);
+      if(score_lower_bound(s, c, initial_dof) > bound.value())
         continue;
       const Quad_orientation corr = correspondence(a, b);
       bool identical = true;
@@ -319,7 +402,7 @@ private:
         identical = identical &&
                     s.graph.component(a, k) == s.graph.component(b, corr.face_edge(k));
       if(identical)
-        add_proposal(s, parent, a, b, initial_dof, out);
+        add_proposal(s, parent, a, b, c, initial_dof, bound, out);
     }
   }
 
@@ -373,7 +456,7 @@ private:
   double m_w1, m_lambda;
   std::size_t m_width;
   bool m_auto_merge, m_verbose;
-  mutable std::map<std::pair<std::size_t, std::size_t>, Quad_orientation> m_correspondences;
+  mutable std::unordered_map<std::uint64_t, Quad_orientation> m_correspondences;
 };
 
 } // namespace internal

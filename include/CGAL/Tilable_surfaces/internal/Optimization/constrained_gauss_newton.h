@@ -25,49 +25,83 @@
 // over-determined, method notes §4b). Globalization: a trust region on the
 // largest vertex move and a backtracking line search on the l2 merit
 // 1/2 d^T H d + nu |c|.
+//
+// With H alone (Gauss-Newton) these steps approach the optimum only
+// linearly, and near it the merit rejects the tangential steps (Maratos
+// effect). The exact variant adds the constraints' curvature
+// sum lambda_i d^2 c_i (congruence_constraints.h) with inertia control, and
+// tries a second-order correction before cutting a full step. But K << F
+// makes the constraints redundant, so no solution is regular: far from
+// feasibility the linearization is inconsistent, lambda is then b times its
+// residual (|lambda| ~ 1e4), and the curvature term needs a large shift. In
+// measurements neither variant dominates (they reach different local
+// solutions), hence a Gauss-Newton attempt first and an exact-Hessian attempt
+// from the input when the first falls short.
+//
+// Once phase 1 stops making progress, a projection phase takes over:
+// Levenberg-Marquardt on min |c(X)|^2 in the metric H,
+// (J^T J + mu H) delta = -J^T c with mu ~ |c|, quadratic to a zero residual
+// where J has full rank, linear (rho ~ 0.9) where it does not.
+//
+// The congruence error (Procrustes on every cluster) is only measured when
+// the largest residual, in mean edge lengths, says it may be within the
+// tolerance, and every few iterations for the visitor; in between the
+// visitor sees that residual as an estimate.
 
 #include <CGAL/Tilable_surfaces/internal/Measure/congruence.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/Solver_settings.h>
-#include <CGAL/Tilable_surfaces/internal/Optimization/energy_terms.h>
+#include <CGAL/Tilable_surfaces/internal/Optimization/congruence_constraints.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/sparse_solver.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace CGAL {
 namespace Tilable_surfaces {
 namespace internal {
 
+// H / mu1 = I + (mu2 / mu1) D^T D on the free unknowns.
+inline Eigen::SparseMatrix<double> displacement_metric(const Solver_input& in, const Solver_settings& settings,
+                                                       const std::vector<int>& variable, int n)
+{
+  typedef Eigen::SparseMatrix<double> Matrix;
+  const Matrix L = Matrix(in.D.transpose() * in.D);
+  const double ratio = settings.weights.fairness / settings.weights.distance;
+  std::vector<Eigen::Triplet<double>> t;
+  for(int v = 0; v < int(variable.size()); ++v)
+    if(variable[v] >= 0)
+      for(int d = 0; d < 3; ++d)
+        t.emplace_back(variable[v] + d, variable[v] + d, 1.0);
+  for(int k = 0; k < L.outerSize(); ++k)
+    for(Matrix::InnerIterator it(L, k); it; ++it)
+      if(variable[it.row()] >= 0 && variable[it.col()] >= 0)
+        for(int d = 0; d < 3; ++d)
+          t.emplace_back(variable[it.row()] + d, variable[it.col()] + d, ratio * it.value());
+  Matrix H(n, n);
+  H.setFromTriplets(t.begin(), t.end());
+  return H;
+}
+
+// One solve from the input, numbering its iterations from `first_iteration`
+// + 1; `stopped` tells whether the visitor stopped it. Phase 1 uses the
+// exact Lagrangian Hessian or, without `exact_hessian`, only H (Gauss-Newton).
 template <typename Visitor>
-Solver_report constrained_gauss_newton(const Solver_input& in, const Solver_settings& settings,
-                                       Point_matrix& X, Visitor& visitor)
+Solver_report constrained_gauss_newton_attempt(const Solver_input& in, const Solver_settings& settings,
+                                               bool exact_hessian, int first_iteration,
+                                               Point_matrix& X, Visitor& visitor, bool& stopped)
 {
   typedef Eigen::SparseMatrix<double> Matrix;
   std::vector<int> variable;
   const int n = number_free_unknowns(in.fixed, variable);
   const double ell = mean_edge_length(in.problem, in.X0);
+  const double tolerance = settings.congruence_tolerance;
   const Congruence_constraints constraints(in.problem, ell);
+  const Matrix H = displacement_metric(in, settings, variable, n);
   // b relative to H's unit diagonal; constraint rows are O(1) per unit move.
   const double b = 1e6;
-
-  // H / mu1 = I + (mu2 / mu1) D^T D on the free unknowns.
-  Matrix H(n, n);
-  {
-    const Matrix L = Matrix(in.D.transpose() * in.D);
-    const double ratio = settings.weights.fairness / settings.weights.distance;
-    std::vector<Eigen::Triplet<double>> t;
-    for(int v = 0; v < int(variable.size()); ++v)
-      if(variable[v] >= 0)
-        for(int d = 0; d < 3; ++d)
-          t.emplace_back(variable[v] + d, variable[v] + d, 1.0);
-    for(int k = 0; k < L.outerSize(); ++k)
-      for(Matrix::InnerIterator it(L, k); it; ++it)
-        if(variable[it.row()] >= 0 && variable[it.col()] >= 0)
-          for(int d = 0; d < 3; ++d)
-            t.emplace_back(variable[it.row()] + d, variable[it.col()] + d, ratio * it.value());
-    H.setFromTriplets(t.begin(), t.end());
-  }
+  const int measure_period = 10;
 
   auto positions = [&](const Eigen::VectorXd& d) {
     Point_matrix Y = in.X0;
@@ -76,87 +110,217 @@ Solver_report constrained_gauss_newton(const Solver_input& in, const Solver_sett
         Y.row(v) += d.segment<3>(variable[v]).transpose();
     return Y;
   };
+  auto largest_move = [&](const Eigen::VectorXd& delta) {
+    double m = 0;
+    for(int k = 0; k < n; k += 3)
+      m = (std::max)(m, delta.segment<3>(k).norm());
+    return m;
+  };
 
-  Eigen::VectorXd d = Eigen::VectorXd::Zero(n);
-  double nu = 0, radius = 0.5;
-  Eigen::VectorXd c, c_trial;
-  Matrix J;
+  Eigen::VectorXd d = Eigen::VectorXd::Zero(n), c, c_trial, delta;
+  Matrix J, identity(n, n);
+  identity.setIdentity();
   SPD_solver solver;
   Solver_report report;
   X = in.X0;
   report.congruence_error = congruence_error(in.problem, X);
-  double best_congruence = report.congruence_error;
-  int iterations_since_best = 0;
+  if(n == 0 || constraints.number_of_rows() == 0)
+    return report;
+  constraints.evaluate(X, variable, n, c, nullptr);
 
-  for(int it = 1; it <= settings.max_iterations && n > 0 && constraints.number_of_rows() > 0; ++it)
+  // After an accepted step: the congruence estimate, measured when it may
+  // meet the tolerance; false when the visitor stops the solver.
+  int it = first_iteration;
+  bool measured = false;
+  stopped = false;
+  auto record = [&]() {
+    ++it;
+    report.iterations = it;
+    report.objective = settings.weights.distance * d.dot(H * d);
+    const double residual = c.cwiseAbs().maxCoeff() / ell;
+    measured = residual <= tolerance || it % measure_period == 0;
+    report.congruence_error = measured ? congruence_error(in.problem, X) : residual;
+    stopped = !visitor.iteration(it, report.congruence_error, report.objective);
+    return !stopped;
+  };
+  auto congruent = [&]() { return measured && report.congruence_error <= tolerance; };
+
+  // The step of the quadratic model with gradient `gradient` subject to
+  // J step = -`target`, by the method of multipliers on the regularized KKT
+  // system factorized in `solver`: each pass is one back-substitution.
+  // `multipliers` is the starting guess and receives the new multipliers.
+  // Passes stop once the linearized residual is below `eta` |target|.
+  auto kkt_step = [&](const Eigen::VectorXd& gradient, const Eigen::VectorXd& target,
+                      Eigen::VectorXd& multipliers, double eta) {
+    Eigen::VectorXd step;
+    for(int pass = 0; pass < 20; ++pass)
+    {
+      step = solver.solve(-(gradient + J.transpose() * (multipliers + b * target)));
+      const Eigen::VectorXd linear_residual = target + J * step;
+      multipliers += b * linear_residual;
+      if(linear_residual.norm() <= eta * target.norm())
+        break;
+    }
+    return step;
+  };
+
+  // Phase 1: SQP steps, with the exact Lagrangian Hessian
+  // W = H + sum lambda_i d^2 c_i shifted by shift I until the KKT matrix has
+  // the inertia of a minimum (inertia control, as in IPOPT), while they
+  // make progress.
+  double nu = 0, radius = 0.5, shift = 0, best_error = std::numeric_limits<double>::infinity();
+  int iterations_since_best = 0;
+  Eigen::VectorXd lambda = Eigen::VectorXd::Zero(c.size());
+  while(it < settings.max_iterations)
   {
     constraints.evaluate(X, variable, n, c, &J);
     const Eigen::VectorXd Hd = H * d;
-    const Matrix A = Matrix(H + b * Matrix(J.transpose() * J));
-    solver.compute(A);
-    if(solver.info() != Eigen::Success)
+    Matrix K = H + b * Matrix(J.transpose() * J);
+    if(exact_hessian)
+      K += constraints.lagrangian_hessian(X, variable, n, lambda);
+    solver.analyzePattern(K);
+    shift = shift == 0 ? 0 : (std::max)(shift / 3, 1e-8);
+    while(!factorize_positive_definite(solver, Matrix(K + shift * identity)) && shift < 1e8)
+      shift = shift == 0 ? 1e-4 : 10 * shift;
+    if(solver.info() != Eigen::Success || shift >= 1e8)
       break;
-    // The SQP step of the linearized constraints, by the method of
-    // multipliers on the regularized KKT system: each pass is one more
-    // back-substitution with the same factorization.
-    Eigen::VectorXd delta, lambda = Eigen::VectorXd::Zero(c.size());
-    for(int pass = 0; pass < 20; ++pass)
+    // Progress: the optimality error (stationarity at the current
+    // multipliers) with the exact Hessian, else the largest residual.
+    const double residual = c.cwiseAbs().maxCoeff() / ell;
+    const double error =
+      exact_hessian ? (std::max)(residual, (Hd + J.transpose() * lambda).cwiseAbs().maxCoeff()) : residual;
+    if(error < 0.9 * best_error)
     {
-      delta = solver.solve(-(Hd + J.transpose() * (lambda + b * c)));
-      const Eigen::VectorXd linear_residual = c + J * delta;
-      lambda += b * linear_residual;
-      if(linear_residual.norm() <= 1e-3 * c.norm())
-        break;
+      best_error = error;
+      iterations_since_best = 0;
     }
+    else if(++iterations_since_best >= (exact_hessian ? 10 : 5))
+      break;
+    // Inexact multiplier passes, with a relative accuracy that tightens as
+    // |c| falls, keep the local convergence quadratic.
+    const double eta = (std::min)(1e-3, c.cwiseAbs().maxCoeff() / ell);
+    Eigen::VectorXd lambda_trial = lambda;
+    delta = kkt_step(Hd, c, lambda_trial, eta);
     // Line search on the l2 merit 1/2 d^T H d + nu |c|, nu above |lambda|.
-    nu = (std::max)(nu, 2 * lambda.norm());
+    nu = (std::max)(nu, 2 * lambda_trial.norm());
     auto merit = [&](const Eigen::VectorXd& dd, const Eigen::VectorXd& cc) {
       return 0.5 * dd.dot(H * dd) + nu * cc.norm();
     };
     const double merit_now = merit(d, c);
-    const double slope = delta.dot(Hd) - nu * c.norm();
+    const double slope = (std::min)(delta.dot(Hd) - nu * c.norm(), 0.0);
+    auto acceptable = [&](const Eigen::VectorXd& dd, double alpha) {
+      constraints.evaluate(positions(dd), variable, n, c_trial, nullptr);
+      return merit(dd, c_trial) <= merit_now + 1e-4 * alpha * slope;
+    };
     // Trust region on the largest vertex move, in edge lengths: far from a
     // solution the linearization is poor and a full step can fold the mesh.
     // It doubles after a step the line search accepts at once, halves otherwise.
-    double largest_move = 0;
-    for(int k = 0; k < n; k += 3)
-      largest_move = (std::max)(largest_move, delta.segment<3>(k).norm());
-    const double alpha_max = (std::min)(1.0, radius * ell / largest_move);
+    const double alpha_max = (std::min)(1.0, radius * ell / largest_move(delta));
     double alpha = alpha_max;
-    Eigen::VectorXd d_trial;
-    Point_matrix X_trial;
-    for(;; alpha *= 0.5)
+    Eigen::VectorXd d_trial = d + alpha * delta;
+    bool accepted = acceptable(d_trial, alpha);
+    if(!accepted && alpha == 1.0)
+    {
+      // Second-order correction against the Maratos effect: the full step
+      // plus the least-W-norm move back onto the constraints' linearization
+      // at its end point.
+      Eigen::VectorXd correction_multipliers = Eigen::VectorXd::Zero(c.size());
+      const Eigen::VectorXd correction =
+        kkt_step(Eigen::VectorXd::Zero(n), c_trial, correction_multipliers, eta);
+      d_trial = d + delta + correction;
+      accepted = acceptable(d_trial, alpha);
+    }
+    for(alpha *= 0.5; !accepted && alpha >= 1e-6; alpha *= 0.5)
     {
       d_trial = d + alpha * delta;
-      X_trial = positions(d_trial);
-      constraints.evaluate(X_trial, variable, n, c_trial, nullptr);
-      if(merit(d_trial, c_trial) <= merit_now + 1e-4 * alpha * (std::min)(slope, 0.0) || alpha < 1e-8)
-        break;
+      accepted = acceptable(d_trial, alpha);
     }
+    if(!accepted) // the merit refuses the step: leave it to the projection
+      break;
     radius = (alpha == alpha_max) ? 2 * radius : (std::max)(0.5 * radius, 1e-3);
+    // Multipliers of the full step; those of a shortened step are blended.
+    lambda += (std::min)(alpha, 1.0) * (lambda_trial - lambda);
+    const double step_length = largest_move(d_trial - d);
+    d = d_trial;
+    X = positions(d);
+    c = c_trial;
+    if(!record())
+      return report;
+    if(congruent() && step_length <= settings.convergence_tolerance * ell)
+      return report;
+  }
+
+  // Phase 2: Levenberg-Marquardt projection onto c = 0, mu = theta |c|_inf / ell,
+  // theta adapted by the ratio of actual to predicted decrease of |c|^2.
+  double theta = 1, best_residual = c.cwiseAbs().maxCoeff();
+  iterations_since_best = 0;
+  while(it < settings.max_iterations && theta < 1e12)
+  {
+    constraints.evaluate(X, variable, n, c, &J);
+    // The floor bounds the conditioning, so that round-off is not amplified.
+    const double mu = (std::max)(theta * c.cwiseAbs().maxCoeff() / ell, 1e-8);
+    solver.compute(Matrix(Matrix(J.transpose() * J) + mu * H));
+    if(solver.info() != Eigen::Success) // mu too small for round-off: damp more
+    {
+      theta *= 4;
+      continue;
+    }
+    delta = solver.solve(-(J.transpose() * c));
+    const Eigen::VectorXd d_trial = d + delta;
+    const Point_matrix X_trial = positions(d_trial);
+    constraints.evaluate(X_trial, variable, n, c_trial, nullptr);
+    const double predicted = c.squaredNorm() - (c + J * delta).squaredNorm();
+    const double rho = (c.squaredNorm() - c_trial.squaredNorm()) / predicted;
+    if(!(predicted > 0 && rho > 1e-4))
+    {
+      theta *= 4;
+      continue;
+    }
+    theta = rho > 0.75 ? (std::max)(theta / 4, 1e-8) : (rho < 0.25 ? 4 * theta : theta);
     d = d_trial;
     X = X_trial;
-
-    report.iterations = it;
-    report.congruence_error = congruence_error(in.problem, X);
-    report.objective = settings.weights.distance * d.dot(H * d);
-    if(!visitor.iteration(it, report.congruence_error, report.objective))
+    c = c_trial;
+    if(!record())
+      return report;
+    const double residual = c.cwiseAbs().maxCoeff();
+    // Once congruent, a few more cheap quadratic steps reach round-off.
+    if(congruent() && (residual <= 1e-3 * tolerance * ell ||
+                       largest_move(delta) <= settings.convergence_tolerance * ell))
       break;
-
-    const bool congruent = report.congruence_error <= settings.congruence_tolerance;
-    const double step = alpha * delta.cwiseAbs().maxCoeff() / ell;
-    if(congruent && step <= settings.convergence_tolerance)
-      break;
-    // Stagnation: the constraints cannot be met from here.
-    if(report.congruence_error < 0.99 * best_congruence)
+    if(residual < 0.9 * best_residual)
     {
-      best_congruence = report.congruence_error;
+      best_residual = residual;
       iterations_since_best = 0;
     }
-    else if(!congruent && ++iterations_since_best >= 20)
+    else if(++iterations_since_best >= 10)
       break;
   }
-  report.objective = settings.weights.distance * d.dot(H * d);
+  if(!measured)
+    report.congruence_error = congruence_error(in.problem, X);
+  return report;
+}
+
+// Gauss-Newton first; if that ends short of the tolerance, a second attempt
+// from the input with the exact Hessian, within the remaining iterations.
+// The two reach different local solutions of the over-determined problem
+// (method notes §4b) and neither always succeeds; the better result is kept.
+template <typename Visitor>
+Solver_report constrained_gauss_newton(const Solver_input& in, const Solver_settings& settings,
+                                       Point_matrix& X, Visitor& visitor)
+{
+  bool stopped = false;
+  Solver_report report = constrained_gauss_newton_attempt(in, settings, false, 0, X, visitor, stopped);
+  if(stopped || report.congruence_error <= settings.congruence_tolerance ||
+     report.iterations >= settings.max_iterations)
+    return report;
+  Point_matrix Y;
+  Solver_report second = constrained_gauss_newton_attempt(in, settings, true, report.iterations, Y, visitor, stopped);
+  if(second.congruence_error < report.congruence_error)
+  {
+    X = Y;
+    std::swap(report, second);
+  }
+  report.iterations = (std::max)(report.iterations, second.iterations);
   return report;
 }
 

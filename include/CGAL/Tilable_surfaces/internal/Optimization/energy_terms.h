@@ -4,8 +4,8 @@
 #ifndef CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_ENERGY_TERMS_H
 #define CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_ENERGY_TERMS_H
 
-// The five terms of the paper's energy (§4) and the equality constraints the
-// default solver derives from F_e, F_a and F_o.
+// The five terms of the paper's energy (§4) and the quantities they compare
+// (congruence_constraints.h turns them into the default solver's constraints).
 //
 // F_e, F_a and F_o all say "the quantities of a group are equal": squared
 // lengths of the mesh edges of an edge-sharing component, squared diagonals
@@ -163,106 +163,6 @@ inline Quantity scale_free_volume(const std::array<int, 4>& item, const Point_ma
   q.value *= factor;
   return q;
 }
-
-// The equality constraints of every group, one row per consecutive pair
-// (a, b) of a group, in length units with the length scale `ell`:
-// - squared lengths: ell (q_a - q_b) / (q_a + q_b);
-// - volumes: 6 ell (w_a - w_b), w = scale_free_volume().
-// Both are invariant under scaling of the surface (method notes §4b): with
-// absolute differences, shrinking the mesh lowers every residual, and far
-// from a solution the Gauss-Newton steps head for a collapsed surface. With
-// the edges and diagonals of instances equal, equal w means equal volume.
-// `variable[v]` is the first of the 3 unknowns of vertex v, or -1 if it is
-// fixed. Rows are numbered in a fixed order, so the sparsity pattern of the
-// Jacobian does not change between calls.
-class Congruence_constraints
-{
-public:
-  Congruence_constraints(const Tilable_problem& problem, double ell)
-    : m_problem(problem), m_ell(ell)
-  {
-    m_rows = 0;
-    for(const Equality_groups* groups : {&problem.edge_groups, &problem.diagonal_groups,
-                                         &problem.volume_groups})
-      for(std::size_t g = 0; g < groups->number_of_groups(); ++g)
-      {
-        const std::size_t n = groups->begin[g + 1] - groups->begin[g];
-        m_rows += n > 1 ? int(n - 1) : 0;
-      }
-  }
-
-  int number_of_rows() const { return m_rows; }
-
-  // The residuals c(X) and, with `jacobian`, their Jacobian with respect to
-  // the free unknowns (number_of_unknowns columns).
-  void evaluate(const Point_matrix& X, const std::vector<int>& variable, int number_of_unknowns,
-                Eigen::VectorXd& c, Eigen::SparseMatrix<double>* jacobian) const
-  {
-    c.resize(m_rows);
-    std::vector<Eigen::Triplet<double>> triplets;
-    int row = 0;
-    auto add = [&](Quantity_kind kind, const Equality_groups& groups) {
-      auto quantity = [&](const std::array<int, 4>& item) {
-        return kind == SQUARED_DISTANCE ? internal::evaluate(kind, item, X) : scale_free_volume(item, X);
-      };
-      for(std::size_t g = 0; g < groups.number_of_groups(); ++g)
-      {
-        const std::size_t first = groups.begin[g], last = groups.begin[g + 1];
-        if(last - first < 2)
-          continue;
-        Quantity previous = quantity(groups.items[first]);
-        for(std::size_t i = first + 1; i < last; ++i, ++row)
-        {
-          const Quantity current = quantity(groups.items[i]);
-          // r = ell f(a, b); d r / d q_a and d r / d q_b.
-          double da = 6 * m_ell, db = -6 * m_ell;
-          if(kind == SQUARED_DISTANCE)
-          {
-            const double sum = previous.value + current.value;
-            c[row] = m_ell * (previous.value - current.value) / sum;
-            da = 2 * m_ell * current.value / (sum * sum);
-            db = -2 * m_ell * previous.value / (sum * sum);
-          }
-          else
-            c[row] = 6 * m_ell * (previous.value - current.value);
-          if(jacobian != nullptr)
-          {
-            append(triplets, row, groups.items[i - 1], previous, da, variable);
-            append(triplets, row, groups.items[i], current, db, variable);
-          }
-          previous = current;
-        }
-      }
-    };
-    add(SQUARED_DISTANCE, m_problem.edge_groups);
-    add(SQUARED_DISTANCE, m_problem.diagonal_groups);
-    add(SIGNED_VOLUME, m_problem.volume_groups);
-    if(jacobian != nullptr)
-    {
-      jacobian->resize(m_rows, number_of_unknowns);
-      jacobian->setFromTriplets(triplets.begin(), triplets.end());
-    }
-  }
-
-private:
-  static void append(std::vector<Eigen::Triplet<double>>& triplets, int row,
-                     const std::array<int, 4>& item, const Quantity& q, double scale,
-                     const std::vector<int>& variable)
-  {
-    for(int k = 0; k < q.arity; ++k)
-    {
-      const int first = variable[item[k]];
-      if(first < 0)
-        continue;
-      for(int d = 0; d < 3; ++d)
-        triplets.emplace_back(row, first + d, scale * q.gradient[k][d]);
-    }
-  }
-
-  const Tilable_problem& m_problem;
-  double m_ell;
-  int m_rows;
-};
 
 } // namespace internal
 } // namespace Tilable_surfaces

@@ -1,0 +1,388 @@
+// Copyright (c) 2026 Tilable_surfaces contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_FLEXIBLE_ORIENTATIONS_H
+#define CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_FLEXIBLE_ORIENTATIONS_H
+
+// Orientations chosen for flexibility among near-ties.
+//
+// Tagging each face with its best-matching orientation, face by face, can lose
+// much of the degree of flexibility: symmetric or nearly symmetric quads (a
+// rectangle matches its S-quad equally well turned by 180 degrees or turned
+// over) pick correspondences that link S-quad edges at random. The weights of
+// the clusters do not depend on the orientations, so an orientation is
+// admissible when its dissimilarity to the S-quad is within a tolerance of the
+// face's best: a near-tie.
+//
+// Among admissible orientations, a local search re-tags one face at a time
+// and keeps a change when it improves, lexicographically,
+//   (1) the DOF, (2) the number of interior mesh edges that link two different
+//   S-quad edges (self-loops constrain nothing: fewer links make components
+//   easier to split, e.g. alternately turned-over rows on a grid), (3) the sum
+//   of the faces' dissimilarities to their S-quads.
+// Each criterion is integral or strictly decreasing, so the search ends.
+// Links are counted with multiplicity, so a re-tagging tells which distinct
+// links appear or vanish: new ones are joined in the current union-find over
+// the 4K S-quad edges; only a vanished one (which may split a component)
+// needs a recount.
+
+#include <CGAL/Tilable_surfaces/internal/Clustering/fast_match.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/parallel_for.h>
+
+#include <boost/graph/graph_traits.hpp>
+
+#include <algorithm>
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <limits>
+#include <unordered_map>
+#include <vector>
+
+namespace CGAL {
+namespace Tilable_surfaces {
+namespace internal {
+
+// An interior mesh edge: face edge `edge[0]` of face `face[0]` and face edge
+// `edge[1]` of face `face[1]` (face edge j joins v_j and v_{j+1}).
+struct Shared_edge
+{
+  std::array<std::size_t, 2> face;
+  std::array<int, 2> edge;
+};
+
+template <typename PolygonMesh, typename FaceIndexMap>
+std::vector<Shared_edge> shared_edges(const PolygonMesh& pm, FaceIndexMap fim)
+{
+  const auto eim = CGAL::get_initialized_edge_index_map(pm);
+  std::vector<std::size_t> first(num_edges(pm), std::size_t(-1));
+  std::vector<int> first_edge(num_edges(pm), 0);
+  std::vector<Shared_edge> r;
+  for(auto f : faces(pm))
+  {
+    // As in Edge_sharing_graph: face edge j is next^{j+1}(halfedge(f)).
+    auto h = halfedge(f, pm);
+    for(int j = 0; j < 4; ++j)
+    {
+      h = next(h, pm);
+      const std::size_t e = get(eim, edge(h, pm));
+      if(first[e] == std::size_t(-1))
+      {
+        first[e] = get(fim, f);
+        first_edge[e] = j;
+      }
+      else
+        r.push_back(Shared_edge{{{first[e], get(fim, f)}}, {{first_edge[e], j}}});
+    }
+  }
+  return r;
+}
+
+class Flexible_orientations
+{
+public:
+  // `dissimilarity[f][o]`: of face f to its S-quad under orientation o, +inf
+  // if o is not admissible; `orientation`: the start, admissible.
+  Flexible_orientations(const std::vector<Shared_edge>& edges, const std::vector<std::size_t>& label,
+                        std::size_t k, const std::vector<std::array<double, 8> >& dissimilarity,
+                        std::vector<Quad_orientation> orientation)
+    : m_edges(edges), m_label(label), m_k(k), m_d(dissimilarity)
+    , m_orientation(std::move(orientation)), m_incident(label.size())
+  {
+    for(std::size_t i = 0; i < edges.size(); ++i)
+      for(int s = 0; s < 2; ++s)
+        m_incident[edges[i].face[s]].push_back(i);
+    for(std::size_t i = 0; i < edges.size(); ++i)
+      add_link(i, +1);
+    m_dof = count_components(m_parent);
+  }
+
+  // Local search; at most `sweeps` passes over the faces.
+  void improve(int sweeps)
+  {
+    for(int sweep = 0; sweep < sweeps; ++sweep)
+    {
+      bool changed = false;
+      for(std::size_t f = 0; f < m_label.size(); ++f)
+        for(int o = 0; o < 8; ++o)
+          changed = try_orientation(f, Quad_orientation(o)) || changed;
+      if(!changed)
+        break;
+    }
+  }
+
+  const std::vector<Quad_orientation>& orientations() const { return m_orientation; }
+  std::size_t degree_of_flexibility() const { return m_dof; }
+
+  // Whether this tagging is better than `other` by the criteria of the file comment.
+  bool is_better_than(const Flexible_orientations& other) const
+  {
+    if(m_dof != other.m_dof) return m_dof > other.m_dof;
+    if(m_links != other.m_links) return m_links < other.m_links;
+    return total_dissimilarity() < other.total_dissimilarity();
+  }
+
+private:
+  // The distinct links that a re-tagging removed and added.
+  struct Change
+  {
+    std::array<std::uint64_t, 4> vanished, appeared;
+    std::size_t nv = 0, na = 0;
+  };
+
+  static std::size_t find(std::vector<std::size_t>& parent, std::size_t x)
+  {
+    while(parent[x] != x) x = parent[x] = parent[parent[x]];
+    return x;
+  }
+
+  // Node 4c + k of the template edge that shared edge `i` is on its side `s`.
+  std::size_t node(std::size_t i, int s) const
+  {
+    const std::size_t f = m_edges[i].face[s];
+    return 4 * m_label[f] + std::size_t(m_orientation[f].template_edge(m_edges[i].edge[s]));
+  }
+
+  // Adds `delta` to the count of the link of shared edge `i`; returns its key
+  // if the link appeared or vanished, 0 otherwise (0 is a self-loop's key).
+  std::uint64_t add_link(std::size_t i, int delta)
+  {
+    const std::size_t a = node(i, 0), b = node(i, 1);
+    if(a == b)
+      return 0;
+    const std::uint64_t key = a < b ? (std::uint64_t(a) << 32) | b : (std::uint64_t(b) << 32) | a;
+    m_links += delta;
+    auto it = m_count.emplace(key, 0).first;
+    it->second += delta;
+    if(it->second == 0)
+    {
+      m_count.erase(it);
+      return key;
+    }
+    return delta > 0 && it->second == 1 ? key : 0;
+  }
+
+  // Moves the links of face f's edges to orientation o.
+  Change retag(std::size_t f, Quad_orientation o)
+  {
+    Change c;
+    for(std::size_t i : m_incident[f])
+      if(const std::uint64_t key = add_link(i, -1)) c.vanished[c.nv++] = key;
+    m_orientation[f] = o;
+    for(std::size_t i : m_incident[f])
+      if(const std::uint64_t key = add_link(i, +1)) c.appeared[c.na++] = key;
+    // A link that vanished and came back did not change.
+    for(std::size_t i = 0; i < c.na;)
+    {
+      auto v = std::find(c.vanished.begin(), c.vanished.begin() + c.nv, c.appeared[i]);
+      if(v == c.vanished.begin() + c.nv) { ++i; continue; }
+      *v = c.vanished[--c.nv];
+      c.appeared[i] = c.appeared[--c.na];
+    }
+    return c;
+  }
+
+  // Number of components of the current links; fills the union-find `parent`.
+  std::size_t count_components(std::vector<std::size_t>& parent) const
+  {
+    parent.resize(4 * m_k);
+    for(std::size_t i = 0; i < parent.size(); ++i) parent[i] = i;
+    std::size_t components = parent.size();
+    for(const auto& l : m_count)
+    {
+      const std::size_t a = find(parent, std::size_t(l.first >> 32));
+      const std::size_t b = find(parent, std::size_t(l.first & 0xffffffffu));
+      if(a != b) { parent[b] = a; --components; }
+    }
+    return components;
+  }
+
+  // Re-tags face f with o if that improves the criteria of the file comment.
+  // Links that only appear join components of the current union-find; a
+  // vanished link may split one, which needs a recount.
+  bool try_orientation(std::size_t f, Quad_orientation o)
+  {
+    const Quad_orientation old = m_orientation[f];
+    if(o == old || !(m_d[f][o.index()] < std::numeric_limits<double>::infinity()))
+      return false;
+    const long long old_links = m_links;
+    const Change c = retag(f, o);
+    std::size_t dof = m_dof;
+    if(c.nv > 0)
+      dof = count_components(m_recount);
+    else
+    {
+      std::array<std::pair<std::size_t, std::size_t>, 4> joined;
+      for(std::size_t i = 0; i < c.na; ++i)
+        joined[i] = {find(m_parent, std::size_t(c.appeared[i] >> 32)),
+                     find(m_parent, std::size_t(c.appeared[i] & 0xffffffffu))};
+      // A tiny union-find over the roots the new links join.
+      std::array<std::size_t, 8> id, up;
+      std::size_t n = 0;
+      auto local = [&](std::size_t r) {
+        for(std::size_t i = 0; i < n; ++i) if(id[i] == r) return i;
+        id[n] = r; up[n] = n; return n++;
+      };
+      auto root = [&](std::size_t i) { while(up[i] != i) i = up[i]; return i; };
+      for(std::size_t i = 0; i < c.na; ++i)
+      {
+        const std::size_t a = root(local(joined[i].first)), b = root(local(joined[i].second));
+        if(a != b) { up[b] = a; --dof; }
+      }
+    }
+    const bool better =
+      dof != m_dof ? dof > m_dof
+                   : (m_links != old_links ? m_links < old_links
+                                           : m_d[f][o.index()] < m_d[f][old.index()]);
+    if(!better)
+    {
+      retag(f, old);
+      return false;
+    }
+    if(c.nv > 0)
+      m_parent.swap(m_recount);
+    else
+      for(std::size_t i = 0; i < c.na; ++i)
+      {
+        const std::size_t a = find(m_parent, std::size_t(c.appeared[i] >> 32));
+        const std::size_t b = find(m_parent, std::size_t(c.appeared[i] & 0xffffffffu));
+        if(a != b) m_parent[b] = a;
+      }
+    m_dof = dof;
+    return true;
+  }
+
+  double total_dissimilarity() const
+  {
+    double sum = 0;
+    for(std::size_t f = 0; f < m_label.size(); ++f) sum += m_d[f][m_orientation[f].index()];
+    return sum;
+  }
+
+  const std::vector<Shared_edge>& m_edges;
+  const std::vector<std::size_t>& m_label;
+  std::size_t m_k;
+  const std::vector<std::array<double, 8> >& m_d;
+  std::vector<Quad_orientation> m_orientation;
+  std::vector<std::vector<std::size_t> > m_incident;
+  std::unordered_map<std::uint64_t, int> m_count;  // distinct links and their multiplicity
+  long long m_links = 0;                             // links, with multiplicity
+  std::vector<std::size_t> m_parent;                 // union-find of the distinct links
+  std::vector<std::size_t> m_recount;                // scratch for recounts
+  std::size_t m_dof = 0;
+};
+
+// A start for the local search: orientations propagated across the shared
+// edges inside each cluster (breadth first, from the first face), so that the
+// two faces of an edge put the same S-quad edge on it with the same corners
+// (`mirrored`: the second instance is the first one turned over the edge, a
+// self-loop) or put opposite S-quad edges on it in the same direction (as
+// translated copies on a grid do). Faces where the propagated orientation is
+// not admissible keep `best`, and the propagation goes on from them.
+inline std::vector<Quad_orientation>
+propagated_orientations(const std::vector<Shared_edge>& edges, const std::vector<std::size_t>& label,
+                        const std::vector<std::array<double, 8> >& dissimilarity,
+                        const std::vector<Quad_orientation>& best, bool mirrored)
+{
+  const std::size_t n = label.size();
+  std::vector<std::vector<std::pair<std::size_t, int> > > incident(n);  // (edge, side)
+  for(std::size_t i = 0; i < edges.size(); ++i)
+    for(int s = 0; s < 2; ++s) incident[edges[i].face[s]].push_back({i, s});
+  std::vector<Quad_orientation> r = best;
+  std::vector<bool> seen(n, false);
+  std::vector<std::size_t> queue;
+  for(std::size_t root = 0; root < n; ++root)
+  {
+    if(seen[root]) continue;
+    seen[root] = true;
+    queue.assign(1, root);
+    for(std::size_t next = 0; next < queue.size(); ++next)
+    {
+      const std::size_t f = queue[next];
+      for(const auto& is : incident[f])
+      {
+        const Shared_edge& e = edges[is.first];
+        const std::size_t g = e.face[1 - is.second];
+        if(seen[g] || label[g] != label[f]) continue;
+        seen[g] = true;
+        queue.push_back(g);
+        // Opposite halfedges: the edge runs the other way in g, so equal
+        // corners need the other direction of travel around the template.
+        const int k = r[f].template_edge(e.edge[is.second]);
+        for(int o = 0; o < 8; ++o)
+        {
+          const Quad_orientation c(o);
+          const bool fits = mirrored
+            ? c.is_reversed() != r[f].is_reversed() && c.face_edge(k) == e.edge[1 - is.second]
+            : c.is_reversed() == r[f].is_reversed() && c.face_edge((k + 2) & 3) == e.edge[1 - is.second];
+          if(fits && dissimilarity[g][o] < std::numeric_limits<double>::infinity())
+            r[g] = c;
+        }
+      }
+    }
+  }
+  return r;
+}
+
+// Per face, the dissimilarity to its S-quad under each orientation allowed by
+// `policy`, or +inf where the orientation is not admissible: where it exceeds
+// the face's best by more than `tolerance` (so every tag is a near-tie of the
+// best match, never a worse fit).
+inline std::vector<std::array<double, 8> >
+admissible_dissimilarities(const std::vector<Quad>& quads, const std::vector<std::size_t>& label,
+                           const std::vector<Quad>& s_quads, Orientation_policy policy,
+                           double tolerance)
+{
+  const double inf = std::numeric_limits<double>::infinity();
+  const int m = number_of_orientations(policy);
+  std::vector<std::array<double, 8> > d(quads.size());
+  parallel_for(quads.size(), [&](std::size_t f) {
+    const Prepared_quad p(s_quads[label[f]]), q(quads[f]);
+    d[f].fill(inf);
+    double best = inf;
+    for(int o = 0; o < m; ++o)
+    {
+      d[f][o] = correspondence_match(p, q, Quad_orientation(o),
+                                     policy == ALLOW_MIRRORED_PANELS).first;
+      best = (std::min)(best, d[f][o]);
+    }
+    for(int o = 0; o < m; ++o)
+      if(d[f][o] > best + tolerance)
+        d[f][o] = inf;
+  });
+  return d;
+}
+
+// The orientations of the file comment: the best of the local searches
+// started from the best orientations and from both propagated ones.
+template <typename PolygonMesh, typename FaceIndexMap>
+std::vector<Quad_orientation>
+flexible_orientations(const PolygonMesh& pm, FaceIndexMap fim, const std::vector<Quad>& quads,
+                      const std::vector<std::size_t>& label, const std::vector<Quad>& s_quads,
+                      const std::vector<Quad_orientation>& best, Orientation_policy policy,
+                      double tolerance)
+{
+  const std::vector<Shared_edge> edges = shared_edges(pm, fim);
+  const std::vector<std::array<double, 8> > d =
+    admissible_dissimilarities(quads, label, s_quads, policy, tolerance);
+  const std::vector<Quad_orientation> starts[3] = {
+    best, propagated_orientations(edges, label, d, best, true),
+    propagated_orientations(edges, label, d, best, false)};
+  std::vector<Flexible_orientations> searches;
+  searches.reserve(3);
+  std::size_t chosen = 0;
+  for(std::size_t i = 0; i < 3; ++i)
+  {
+    searches.emplace_back(edges, label, s_quads.size(), d, starts[i]);
+    searches.back().improve(3);  // further sweeps changed no DOF on the test surfaces
+    if(searches[i].is_better_than(searches[chosen]))
+      chosen = i;
+  }
+  return searches[chosen].orientations();
+}
+
+} // namespace internal
+} // namespace Tilable_surfaces
+} // namespace CGAL
+
+#endif // CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_FLEXIBLE_ORIENTATIONS_H

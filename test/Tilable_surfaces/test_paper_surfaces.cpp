@@ -1,0 +1,69 @@
+// The paper's six surfaces, clustered by cluster_quads() at one of the paper's
+// K values each (ones that solve in seconds), then optimized by the default
+// solver: the result must be congruent to 1e-6, checked here by rigid fits
+// (Eigen::umeyama, independent of the package's measure), with finite
+// positions and a finite, reported approximation error.
+
+#include "optimization_test_helpers.h"
+
+#include <CGAL/Tilable_surfaces/cluster_quads.h>
+#include <CGAL/Tilable_surfaces/optimize_tilable_surface.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <iostream>
+#include <string>
+
+using namespace test_helpers;
+
+namespace {
+
+struct Paper_case
+{
+  std::string surface;
+  int K;
+};
+
+class PaperSurface : public ::testing::TestWithParam<Paper_case>
+{};
+
+TEST_P(PaperSurface, DefaultSolverReachesCongruence)
+{
+  const Paper_case& p = GetParam();
+  Mesh mesh = load(p.surface + ".off");
+  Clustering c = add_clustering_maps(mesh);
+  c.K = p.K;
+  TS::cluster_quads(mesh, TS::parameters::number_of_tiles(p.K).random_seed(0)
+                            .face_cluster_map(c.cluster).face_orientation_map(c.orientation));
+
+  const TS::Optimization_result r = TS::optimize_tilable_surface(
+    mesh, TS::parameters::face_cluster_map(c.cluster).face_orientation_map(c.orientation));
+
+  for(Vertex v : vertices(mesh))
+    ASSERT_TRUE(std::isfinite(mesh.point(v).x()) && std::isfinite(mesh.point(v).y()) &&
+                std::isfinite(mesh.point(v).z()));
+  // The fit onto each cluster's first instance is at most twice the error
+  // against the S-quad, hence 2e-6 for the 1e-6 target.
+  const double congruence = pairwise_congruence_error(mesh, c);
+  EXPECT_LE(congruence, 2e-6);
+  EXPECT_TRUE(r.converged);
+  EXPECT_TRUE(std::isfinite(r.measure.max_approximation_error));
+  EXPECT_TRUE(std::isfinite(r.measure.mean_approximation_error));
+  RecordProperty("congruence", std::to_string(congruence));
+  RecordProperty("max_approximation_error", std::to_string(r.measure.max_approximation_error));
+  std::cout << p.surface << " K=" << p.K << ": congruence " << congruence << ", approximation max "
+            << r.measure.max_approximation_error << " mean " << r.measure.mean_approximation_error
+            << ", " << r.iterations << " iterations\n";
+}
+
+INSTANTIATE_TEST_SUITE_P(Paper, PaperSurface,
+                         ::testing::Values(Paper_case{"swiss_re", 24}, Paper_case{"tunnel", 8},
+                                           Paper_case{"seashell", 96}, Paper_case{"decocube", 21},
+                                           Paper_case{"monkey_saddle", 3},
+                                           Paper_case{"de_beers_ginza", 48}),
+                         [](const ::testing::TestParamInfo<Paper_case>& info) {
+                           return info.param.surface + "_K" + std::to_string(info.param.K);
+                         });
+
+} // namespace

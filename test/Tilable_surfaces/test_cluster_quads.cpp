@@ -8,6 +8,8 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
+#include "grid_mesh.h"
+
 #include <gtest/gtest.h>
 
 #ifdef CGAL_LINKED_WITH_TBB
@@ -41,20 +43,6 @@ Mesh read(const std::string& name)
   return m;
 }
 
-// nx x ny grid of w x h rectangles in z = 0 (see test_edge_sharing_graph.cpp).
-Mesh grid(int nx, int ny, double w = 2, double h = 1)
-{
-  Mesh m;
-  std::vector<Mesh::Vertex_index> v;
-  for(int j = 0; j <= ny; ++j)
-    for(int i = 0; i <= nx; ++i)
-      v.push_back(m.add_vertex(Point(w * i, h * j, 0)));
-  auto id = [&](int i, int j) { return v[i + (nx + 1) * j]; };
-  for(int j = 0; j < ny; ++j)
-    for(int i = 0; i < nx; ++i)
-      m.add_face(id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
-  return m;
-}
 
 struct Maps
 {
@@ -238,7 +226,7 @@ TEST(FastMatch, SameAsBestMatch)
 
 TEST(ClusterQuads, FlatGridOfEqualRectanglesIsOneCluster)
 {
-  Mesh m = grid(6, 4);
+  Mesh m = grid<Mesh>(6, 4);
   Maps mp = maps(m);
   const TS::Clustering_result r = cluster(m, mp, 1);
   EXPECT_EQ(number_of_clusters(m, mp), 1u);
@@ -270,7 +258,7 @@ TEST(ClusterQuads, OrientationsChosenForFlexibilityOnSymmetricTiles)
   for(double h : {2.0, 1.0})
     for(TS::Orientation_policy policy : {TS::PROPER_RIGID_MOTIONS, TS::NO_TURNED_OVER_PANELS})
     {
-      Mesh m = grid(5, 4, 2, h);
+      Mesh m = grid<Mesh>(5, 4, 2, h);
       Maps mp = maps(m);
       const TS::Clustering_result r = TS::cluster_quads(
         m, TS::parameters::number_of_tiles(1).face_cluster_map(mp.cluster)
@@ -284,7 +272,7 @@ TEST(ClusterQuads, OrientationsChosenForFlexibilityOnSymmetricTiles)
 
 TEST(ClusterQuads, CongruentQuadsAreSplitWhenKExceedsTheShapes)
 {
-  Mesh m = grid(4, 3);
+  Mesh m = grid<Mesh>(4, 3);
   Maps mp = maps(m);
   const TS::Clustering_result r = cluster(m, mp, 5);
   EXPECT_EQ(number_of_clusters(m, mp), 5u);
@@ -498,7 +486,7 @@ TEST(ClusterEditing, MergeKeepsInstancesAndLowersNoDofAfterSameShapeMerge)
   // Quadrants of a flat grid of equal rectangles, orientation 0 everywhere:
   // merging two quadrant clusters of the same shape keeps template edges 0/2
   // and 1/3 apart; DOF can only decrease on a merge.
-  Mesh m = grid(4, 4);
+  Mesh m = grid<Mesh>(4, 4);
   Maps mp = maps(m);
   for(Face f : faces(m)) mp.cluster[f] = (int(f) % 4) / 2 + 2 * ((int(f) / 4) / 2);
   auto np = TS::parameters::face_cluster_map(mp.cluster).face_orientation_map(mp.orientation);
@@ -511,7 +499,7 @@ TEST(ClusterEditing, MergeKeepsInstancesAndLowersNoDofAfterSameShapeMerge)
 
 TEST(ClusterEditing, Errors)
 {
-  Mesh m = grid(2, 2);
+  Mesh m = grid<Mesh>(2, 2);
   Maps mp = maps(m);
   for(Face f : faces(m)) mp.cluster[f] = std::size_t(f);
   auto np = TS::parameters::face_cluster_map(mp.cluster).face_orientation_map(mp.orientation);

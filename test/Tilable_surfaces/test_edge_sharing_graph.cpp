@@ -4,6 +4,8 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 
+#include "grid_mesh.h"
+
 #include <gtest/gtest.h>
 
 #include <functional>
@@ -16,23 +18,6 @@ typedef Mesh::Face_index Face;
 
 namespace {
 
-// nx x ny grid of w x h rectangles in the plane z = 0. Face (i, j) is added
-// with vertices (i,j), (i+1,j), (i+1,j+1), (i,j+1): its edge 0 and 2 are
-// horizontal (length w), 1 and 3 vertical (length h). Faces are numbered
-// i + nx * j.
-Mesh grid(int nx, int ny, double w = 2, double h = 1)
-{
-  Mesh m;
-  std::vector<Mesh::Vertex_index> v;
-  for(int j = 0; j <= ny; ++j)
-    for(int i = 0; i <= nx; ++i)
-      v.push_back(m.add_vertex(Kernel::Point_3(w * i, h * j, 0)));
-  auto id = [&](int i, int j) { return v[i + (nx + 1) * j]; };
-  for(int j = 0; j < ny; ++j)
-    for(int i = 0; i < nx; ++i)
-      m.add_face(id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
-  return m;
-}
 
 struct Labelling
 {
@@ -58,7 +43,7 @@ TEST(EdgeSharingGraph, FlatGridOneClusterHasTwoLengths)
 {
   // All faces oriented alike: shared vertical edges link template edges 1 and
   // 3, shared horizontal ones link 0 and 2: components {0, 2} and {1, 3}.
-  Mesh m = grid(5, 3);
+  Mesh m = grid<Mesh>(5, 3);
   Labelling l = label(m, [](int) { return 0; });
   TS::Edge_sharing_graph<Mesh> g(m, 1, l.cluster, l.orientation);
   EXPECT_EQ(g.degree_of_flexibility(), 2u);
@@ -70,7 +55,7 @@ TEST(EdgeSharingGraph, FlatGridOneClusterHasTwoLengths)
 TEST(EdgeSharingGraph, BoundaryEdgesAddNoLink)
 {
   // A single face: only boundary edges, so the 4 S-quad edges stay apart.
-  Mesh m = grid(1, 1);
+  Mesh m = grid<Mesh>(1, 1);
   Labelling l = label(m, [](int) { return 0; });
   TS::Edge_sharing_graph<Mesh> g(m, 1, l.cluster, l.orientation);
   EXPECT_EQ(g.degree_of_flexibility(), 4u);
@@ -81,7 +66,7 @@ TEST(EdgeSharingGraph, SelfLoopsAreIgnored)
   // Two faces side by side in one cluster; the right one has orientation 2,
   // so its face edge 3 (the shared edge) is template edge (3 - 2) = 1, the
   // same node as the left face's edge 1: a self-loop, no constraint.
-  Mesh m = grid(2, 1);
+  Mesh m = grid<Mesh>(2, 1);
   Labelling l = label(m, [](int) { return 0; }, [](int f) { return f == 1 ? 2 : 0; });
   TS::Edge_sharing_graph<Mesh> g(m, 1, l.cluster, l.orientation);
   EXPECT_EQ(g.degree_of_flexibility(), 4u);
@@ -95,7 +80,7 @@ TEST(EdgeSharingGraph, FourByFourPeriodicLabellingCountedByHand)
   // parity b: (2b,1)~(2b+1,3) and (2b+1,1)~(2b,3): 4 components of vertical
   // edges. Likewise horizontal edges, for each column parity a:
   // (a,2)~(a+2,0) and (a+2,2)~(a,0): 4 components. DOF = 8.
-  Mesh m = grid(4, 4);
+  Mesh m = grid<Mesh>(4, 4);
   Labelling l = label(m, [](int f) { return (f % 4) % 2 + 2 * ((f / 4) % 2); });
   TS::Edge_sharing_graph<Mesh> g(m, 4, l.cluster, l.orientation);
   EXPECT_EQ(g.degree_of_flexibility(), 8u);
@@ -111,7 +96,7 @@ TEST(EdgeSharingGraph, FourByFourQuadrantsCountedByHand)
   // link (c,1)~(c,3) and (c,0)~(c,2); across the middle column (c,1)~(c+1,3)
   // for c = 0, 2; across the middle row (c,2)~(c+2,0) for c = 0, 1. Vertical
   // components: {0,1} and {2,3} clusters; horizontal: {0,2} and {1,3}. DOF 4.
-  Mesh m = grid(4, 4);
+  Mesh m = grid<Mesh>(4, 4);
   Labelling l = label(m, [](int f) { return (f % 4) / 2 + 2 * ((f / 4) / 2); });
   TS::Edge_sharing_graph<Mesh> g(m, 4, l.cluster, l.orientation);
   EXPECT_EQ(g.degree_of_flexibility(), 4u);
@@ -128,7 +113,7 @@ TEST(EdgeSharingGraph, FourByFourQuadrantsCountedByHand)
 
 TEST(EdgeSharingGraph, EdgeComponentMapColoursMeshEdges)
 {
-  Mesh m = grid(3, 2);
+  Mesh m = grid<Mesh>(3, 2);
   Labelling l = label(m, [](int) { return 0; });
   TS::Edge_sharing_graph<Mesh> g(m, 1, l.cluster, l.orientation);
   const auto colours = g.edge_component_map();
@@ -142,7 +127,7 @@ TEST(EdgeSharingGraph, EdgeComponentMapColoursMeshEdges)
 
 TEST(EdgeSharingGraph, CopiesAreIndependent)
 {
-  Mesh m = grid(4, 4);
+  Mesh m = grid<Mesh>(4, 4);
   Labelling l = label(m, [](int f) { return (f % 4) % 2 + 2 * ((f / 4) % 2); });
   TS::Edge_sharing_graph<Mesh> g(m, 4, l.cluster, l.orientation);
   TS::Edge_sharing_graph<Mesh> copy = g;
@@ -154,7 +139,7 @@ TEST(EdgeSharingGraph, CopiesAreIndependent)
 
 TEST(EdgeSharingGraph, RejectsBadLabels)
 {
-  Mesh m = grid(2, 2);
+  Mesh m = grid<Mesh>(2, 2);
   Labelling l = label(m, [](int f) { return f; });
   EXPECT_THROW(TS::Edge_sharing_graph<Mesh>(m, 3, l.cluster, l.orientation), TS::Invalid_input);
   Labelling o = label(m, [](int) { return 0; }, [](int) { return 8; });

@@ -172,3 +172,20 @@ TEST(KSetTilableSurface, SetClusteringChecksTheMaps)
   EXPECT_EQ(surface.number_of_clusters(), 2u);
   EXPECT_EQ(get(surface.face_orientation_map(), Mesh::Face_index(7)), 4);
 }
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+
+TEST(MakeKSetTilable, SameResultWhateverTheThreadCount)
+{
+  std::vector<std::vector<Mesh::Point> > results;
+  for(int threads : {1, 2})
+  {
+    tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
+    Mesh mesh = read("seashell.off");
+    TS::make_k_set_tilable(mesh, TSP::number_of_tiles(96));
+    results.push_back(points(mesh));
+  }
+  EXPECT_TRUE(results[0] == results[1]) << "bit-identical positions";
+}
+#endif

@@ -51,22 +51,24 @@ class Edge_sharing_graph
   typedef boost::graph_traits<PolygonMesh> GT;
 
 public:
-  typedef typename GT::face_descriptor face_descriptor;
-  typedef typename GT::edge_descriptor edge_descriptor;
-  typedef typename GT::halfedge_descriptor halfedge_descriptor;
+  typedef typename GT::face_descriptor face_descriptor;          ///< faces of the mesh
+  typedef typename GT::edge_descriptor edge_descriptor;          ///< edges of the mesh
+  typedef typename GT::halfedge_descriptor halfedge_descriptor;  ///< halfedges of the mesh
 
   /// Readable property map: the component (0..DOF-1) of every mesh edge, for
   /// colouring edges as in the paper's Fig. 6.
   class Edge_component_map
   {
   public:
-    typedef edge_descriptor key_type;
-    typedef std::size_t value_type;
-    typedef std::size_t reference;
-    typedef boost::readable_property_map_tag category;
+    typedef edge_descriptor key_type;                   ///< a mesh edge
+    typedef std::size_t value_type;                     ///< its component
+    typedef std::size_t reference;                      ///< returned by value
+    typedef boost::readable_property_map_tag category;  ///< read only
 
     Edge_component_map() : m_graph(nullptr) {}
+    /// The map reading graph `g`.
     explicit Edge_component_map(const Edge_sharing_graph* g) : m_graph(g) {}
+    /// The component of `e`.
     friend std::size_t get(const Edge_component_map& m, edge_descriptor e)
     { return m.m_graph->component(e); }
 

@@ -57,6 +57,7 @@ class K_set_tilable_surface
   typedef typename boost::property_traits<VertexPointMap>::value_type Point;
 
 public:
+  /// The faces of the mesh.
   typedef typename boost::graph_traits<PolygonMesh>::face_descriptor face_descriptor;
   /// Readable and writable map from faces to their cluster id (0..K-1).
   typedef boost::iterator_property_map<std::vector<int>::iterator, Face_index_map, int, int&>

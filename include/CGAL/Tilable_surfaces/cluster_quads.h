@@ -58,7 +58,7 @@ struct Clustering_candidate
 {
   /// Where the configuration comes from.
   enum Origin { HIERARCHICAL, KMEANS };
-  Origin origin = HIERARCHICAL;
+  Origin origin = HIERARCHICAL;  ///< the search that produced it
   /// Its weight, in the units of the clustering path (see `Clustering_result::path`):
   /// sum of pairwise dissimilarities on the exact path, sum of pairwise squared
   /// descriptor distances on the descriptor path.
@@ -96,16 +96,17 @@ struct Clustering_result
   /// orientations (chosen for flexibility among admissible ones, see
   /// `cluster_quads()`): the number of components of its edge-sharing graph.
   std::size_t degree_of_flexibility = 0;
-  /// The number N of clusters of the threshold clustering, and the absolute
-  /// threshold that produced it (the descriptor path doubles the threshold until
-  /// N is at most max(1000, 4K)).
+  /// The number N of clusters of the threshold clustering.
   std::size_t number_of_initial_clusters = 0;
+  /// The absolute threshold that produced them (the descriptor path doubles
+  /// the threshold until N is at most max(1000, 4K)).
   double initial_threshold = 0;
   /// The final candidate pool: the beam, best score first, then the k-means
   /// configuration if it was asked for and has K non-empty clusters.
   std::vector<Clustering_candidate> candidates;
-  /// Index in `candidates` of the returned configuration, and why.
+  /// Index in `candidates` of the returned configuration.
   std::size_t chosen_candidate = 0;
+  /// Why it was chosen, in words.
   std::string choice_reason;
 };
 

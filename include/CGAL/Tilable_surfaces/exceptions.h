@@ -26,6 +26,7 @@ public:
   /// The kind of element the error is about.
   enum Element { MESH, VERTEX, FACE, EDGE, PARAMETER };
 
+  /// An error about `element` number `index`, explained by `message`.
   Invalid_input(const std::string& message,
                 Element element = MESH,
                 std::size_t index = (std::numeric_limits<std::size_t>::max)())

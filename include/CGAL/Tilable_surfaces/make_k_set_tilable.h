@@ -29,10 +29,9 @@ struct K_set_tilable_result
   Optimization_result optimization;
   /// The tile catalog of the result (one S-quad per cluster, mesh units).
   std::vector<IO::Tile> tiles;
-  /// Seconds spent validating the input, clustering, and in total.
-  double validation_time = 0;
-  double clustering_time = 0;
-  double total_time = 0;
+  double validation_time = 0;  ///< seconds spent checking the input
+  double clustering_time = 0;  ///< seconds spent clustering
+  double total_time = 0;       ///< seconds in total
   /// Whether every face fits its S-quad within `congruence_tolerance`, as
   /// measured on the result (`optimization.converged`).
   bool is_tilable() const { return optimization.converged; }

@@ -67,8 +67,8 @@ struct Tilability_measure
   double mean_displacement = 0;
   /// The paper's normalized terms (its Table 1): both surfaces scaled by the
   /// same factor so that the input's largest bounding-box side is 1, then
-  /// F_d / #vertices, F_f / #vertices, F_e / #edges, F_a / #faces and
-  /// F_o / #faces, each term as the paper defines it (cyclic sums, fairness
+  /// F_d / (number of vertices), F_f / (number of vertices), F_e / (number
+  /// of edges), F_a / (number of faces) and F_o / (number of faces), each term as the paper defines it (cyclic sums, fairness
   /// of the result with the features of the input).
   Energy_terms normalized_terms;
 };
@@ -164,8 +164,8 @@ Tilability_measure measure_tilability(const PolygonMesh& result, const PolygonMe
 }
 
 /// \ingroup PkgTilableSurfacesRef
-/// \copydoc measure_tilability(const PolygonMesh&, const PolygonMesh&, const NamedParameters&, const InputNamedParameters&)
-/// The input mesh uses its default property maps.
+/// Same as the function above, the input mesh using its default property
+/// maps.
 template <typename PolygonMesh, typename NamedParameters>
 Tilability_measure measure_tilability(const PolygonMesh& result, const PolygonMesh& input,
                                       const NamedParameters& np)

@@ -60,10 +60,14 @@ struct Named_function_parameters
 {
   /// The CGAL pack this wrapper is.
   typedef CGAL::Named_function_parameters<T, Tag, Base> CGAL_parameters;
+  /// This type, the base of the packs its chaining functions return.
   typedef Named_function_parameters<T, Tag, Base> self;
 
+  /// The pack of one default-constructed value.
   Named_function_parameters() : CGAL_parameters() {}
+  /// The pack of one value `v` under `Tag`.
   Named_function_parameters(const T& v) : CGAL_parameters(v) {}
+  /// The pack `b` extended by the value `v` under `Tag`.
   Named_function_parameters(const T& v, const Base& b) : CGAL_parameters(v, b) {}
 
 #define CGAL_TS_chain_member(TAG_NAMESPACE, X, Z)                         \

@@ -113,8 +113,10 @@ public:
     return m_index < 4 ? (j - m_index) & 3 : (m_index - j - 1) & 3;
   }
 
+  /// Equality of correspondences.
   friend bool operator==(const Quad_orientation& a, const Quad_orientation& b)
   { return a.m_index == b.m_index; }
+  /// Inequality of correspondences.
   friend bool operator!=(const Quad_orientation& a, const Quad_orientation& b)
   { return a.m_index != b.m_index; }
 
@@ -214,9 +216,9 @@ inline Quad_descriptor shape_descriptor(const Quad& q)
 /// determinant +1 unless `is_mirrored` (only with `ALLOW_MIRRORED_PANELS`).
 struct Rigid_fit
 {
-  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();
-  Eigen::Vector3d translation = Eigen::Vector3d::Zero();
-  bool is_mirrored = false;
+  Eigen::Matrix3d rotation = Eigen::Matrix3d::Identity();  ///< the linear part
+  Eigen::Vector3d translation = Eigen::Vector3d::Zero();   ///< the translation
+  bool is_mirrored = false;                                ///< whether det(rotation) = -1
 
   /// The image of `p`.
   Eigen::Vector3d operator()(const Eigen::Vector3d& p) const { return rotation * p + translation; }
@@ -274,9 +276,9 @@ inline double rigid_fit_deviation(const Quad& source, const Quad& target, bool a
 /// s(p, q) of the paper, the correspondence that achieves it and the motion.
 struct Quad_match
 {
-  double dissimilarity = (std::numeric_limits<double>::max)();
-  Quad_orientation orientation;
-  Rigid_fit fit;
+  double dissimilarity = (std::numeric_limits<double>::max)();  ///< s(p, q)
+  Quad_orientation orientation;  ///< the correspondence that achieves it
+  Rigid_fit fit;                 ///< the motion of p onto q relabelled by `orientation`
 };
 
 /// \ingroup PkgTilableSurfacesRef

@@ -35,6 +35,7 @@
 
 #include <CGAL/Tilable_surfaces/Edge_sharing_graph.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/fast_match.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/link_count.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/parallel_for.h>
 
 #include <algorithm>
@@ -286,21 +287,10 @@ private:
   static std::size_t joined_components(const State& s, std::size_t kept, std::size_t removed,
                                         Quad_orientation corr)
   {
-    std::array<std::size_t, 8> id, parent;
-    std::size_t n = 0;
-    auto node = [&](std::size_t c) {
-      for(std::size_t i = 0; i < n; ++i) if(id[i] == c) return i;
-      id[n] = c; parent[n] = n; return n++;
-    };
-    auto root = [&](std::size_t i) { while(parent[i] != i) i = parent[i]; return i; };
-    std::size_t joined = 0;
+    std::array<std::pair<std::size_t, std::size_t>, 4> links;
     for(int k = 0; k < 4; ++k)
-    {
-      const std::size_t a = root(node(s.graph.component(kept, k)));
-      const std::size_t b = root(node(s.graph.component(removed, corr.face_edge(k))));
-      if(a != b) { parent[b] = a; ++joined; }
-    }
-    return joined;
+      links[k] = {s.graph.component(kept, k), s.graph.component(removed, corr.face_edge(k))};
+    return number_of_joins(links, 4);
   }
 
   // The lowest score a merge of cost `cost` can get from `s` (see the file comment).

@@ -27,6 +27,7 @@
 // needs a recount.
 
 #include <CGAL/Tilable_surfaces/internal/Clustering/fast_match.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/link_count.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/parallel_for.h>
 
 #include <boost/graph/graph_traits.hpp>
@@ -216,19 +217,7 @@ private:
       for(std::size_t i = 0; i < c.na; ++i)
         joined[i] = {find(m_parent, std::size_t(c.appeared[i] >> 32)),
                      find(m_parent, std::size_t(c.appeared[i] & 0xffffffffu))};
-      // A tiny union-find over the roots the new links join.
-      std::array<std::size_t, 8> id, up;
-      std::size_t n = 0;
-      auto local = [&](std::size_t r) {
-        for(std::size_t i = 0; i < n; ++i) if(id[i] == r) return i;
-        id[n] = r; up[n] = n; return n++;
-      };
-      auto root = [&](std::size_t i) { while(up[i] != i) i = up[i]; return i; };
-      for(std::size_t i = 0; i < c.na; ++i)
-      {
-        const std::size_t a = root(local(joined[i].first)), b = root(local(joined[i].second));
-        if(a != b) { up[b] = a; --dof; }
-      }
+      dof -= number_of_joins(joined, c.na);
     }
     const bool better =
       dof != m_dof ? dof > m_dof

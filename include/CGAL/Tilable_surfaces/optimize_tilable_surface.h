@@ -43,9 +43,10 @@ enum Solver_type
   /// with multiplier updates and a line search on an l2 merit function, then,
   /// once the constraint residuals stop decreasing, a Levenberg-Marquardt
   /// projection onto the constraints in the same metric. If that ends short
-  /// of `congruence_tolerance`, it is run again from the input with the exact
-  /// Lagrangian Hessian (with inertia control and second-order corrections)
-  /// within the remaining iterations, and the better result is kept.
+  /// of `congruence_tolerance`, it is run again from the input with a more
+  /// cautious trust region, then with the exact Lagrangian Hessian (with
+  /// inertia control and second-order corrections), within the remaining
+  /// iterations, and the best result is kept.
   /// Only the ratio mu2 / mu1 matters; mu3..mu5 are not used.
   CONSTRAINED_GAUSS_NEWTON,
   /// The paper's method, as a reference: Polak-Ribiere nonlinear conjugate

@@ -14,6 +14,7 @@
 
 #include <CGAL/Tilable_surfaces/make_k_set_tilable.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <iostream>
 #include <string>
@@ -64,6 +65,18 @@ int main(int argc, char** argv)
       if(s == "paper-cg") solvers = {{"paper-cg", TS::PAPER_CONJUGATE_GRADIENT}};
       else if(s == "both") solvers.push_back({"paper-cg", TS::PAPER_CONJUGATE_GRADIENT});
       else if(s != "gauss-newton") { std::cerr << "unknown solver " << s << "\n"; return 2; }
+    }
+    else if(a == "--help" || a == "-h")
+    {
+      std::cout << "Usage: paper_table [--solver gauss-newton|paper-cg|both] [SURFACE ...]\n"
+                   "  SURFACE: swiss_re tunnel seashell decocube monkey_saddle de_beers_ginza (default: all)\n";
+      return 0;
+    }
+    else if(std::none_of(paper_rows.begin(), paper_rows.end(),
+                         [&a](const auto& row) { return row.first == a; }))
+    {
+      std::cerr << "paper_table: unknown surface or option '" << a << "' (try --help)\n";
+      return 2;
     }
     else
       selected.push_back(a);

@@ -4,6 +4,7 @@
 
 #include "optimization_test_helpers.h"
 
+#include <CGAL/Tilable_surfaces/cluster_quads.h>
 #include <CGAL/Tilable_surfaces/optimize_tilable_surface.h>
 
 #include <gtest/gtest.h>
@@ -11,6 +12,8 @@
 #include <cmath>
 #include <cstdlib>
 #include <iostream>
+#include <sstream>
+#include <string>
 
 using namespace test_helpers;
 
@@ -147,9 +150,10 @@ TEST(Optimize, SimilarityInvariance)
   for(Vertex v : vertices(mesh))
     worst = (std::max)(worst, std::sqrt(CGAL::squared_distance(similarity(mesh.point(v)),
                                                                moved_mesh.point(v))) / diagonal);
-  // The input's round-off (coordinates near 1e0, diagonal near 3e-3) is
-  // amplified by the final projection's flat directions: 1e-8, not 1e-9.
-  EXPECT_LE(worst, 1e-8);
+  // The moved input's round-off (coordinates near 1, diagonal near 3e-3,
+  // so ~3e-14 relative) is what the solver may amplify; 1e-9 leaves room.
+  std::cout << "[ numbers  ] similarity invariance: worst relative deviation " << worst << "\n";
+  EXPECT_LE(worst, 1e-9);
   EXPECT_NEAR(r.measure.congruence_error, r2.measure.congruence_error,
               1e-9 + 1e-6 * r.measure.congruence_error);
 }
@@ -206,28 +210,62 @@ TEST(Optimize, PaperConjugateGradientLowersTheConstraintTerms)
 }
 
 // Method notes §4b: on the same clustering the constrained solver reaches
-// the tolerance, moving less than the paper's penalty method with lowered
-// weights, which must either stay incongruent or move more.
-TEST(Optimize, ConstrainedSolverBeatsPaperMethodOnSameClustering)
+// the tolerance, moving less than the paper's penalty method, whose
+// weights mu1 = mu2 are lowered from the default until it reaches the same
+// congruence; if none does, it must not claim convergence.
+namespace {
+
+void expect_constrained_solver_beats_paper_method(const std::string& what, Mesh& mesh,
+                                                  const Clustering& c)
+{
+  const Mesh input = mesh;
+  const TS::Optimization_result r = TS::optimize_tilable_surface(mesh, clustering_parameters(c));
+  print(what + " (Gauss-Newton)", mesh, r);
+  EXPECT_TRUE(r.converged);
+  EXPECT_LE(pairwise_congruence_error(mesh, c), 2e-6);
+  bool paper_reached_tolerance = false;
+  for(double weight : {1e-4, 1e-6, 1e-8})
+  {
+    Mesh paper = input;
+    Clustering cp;
+    cp.cluster = paper.property_map<Face, int>("f:cluster").first;
+    cp.orientation = paper.property_map<Face, int>("f:orientation").first;
+    cp.K = c.K;
+    const TS::Optimization_result rp = TS::optimize_tilable_surface(
+      paper, clustering_parameters(cp, TS::parameters::solver(TS::PAPER_CONJUGATE_GRADIENT)
+                                         .distance_weight(weight).fairness_weight(weight)));
+    std::ostringstream label;
+    label << what << " (paper CG, mu1 = mu2 = " << weight << ")";
+    print(label.str(), paper, rp);
+    if(pairwise_congruence_error(paper, cp) <= 1e-6)
+    {
+      paper_reached_tolerance = true;
+      EXPECT_LT(r.measure.max_displacement, rp.measure.max_displacement);
+      break;
+    }
+    EXPECT_FALSE(rp.converged);
+  }
+  if(!paper_reached_tolerance)
+    std::cout << "[ numbers  ] " << what << ": the paper's method does not reach 1e-6\n";
+}
+
+} // namespace
+
+TEST(Optimize, ConstrainedSolverBeatsPaperMethodOnMonkeySaddle)
 {
   Mesh mesh = load("monkey_saddle.off");
   const Clustering c = greedy_clustering(mesh, 24);
-  Mesh paper = mesh;
-  Clustering cp;
-  cp.cluster = paper.property_map<Face, int>("f:cluster").first;
-  cp.orientation = paper.property_map<Face, int>("f:orientation").first;
-  const TS::Optimization_result r = TS::optimize_tilable_surface(mesh, clustering_parameters(c));
-  print("monkey saddle greedy K=24 (Gauss-Newton)", mesh, r);
-  const TS::Optimization_result rp = TS::optimize_tilable_surface(
-    paper, clustering_parameters(cp, TS::parameters::solver(TS::PAPER_CONJUGATE_GRADIENT)
-                                       .distance_weight(1e-6).fairness_weight(1e-6)));
-  print("monkey saddle greedy K=24 (paper CG, mu1 = mu2 = 1e-6)", paper, rp);
-  EXPECT_TRUE(r.converged);
-  EXPECT_LE(pairwise_congruence_error(mesh, c), 2e-6);
-  if(rp.measure.congruence_error <= 1e-6)
-    EXPECT_LT(r.measure.max_displacement, rp.measure.max_displacement);
-  else
-    EXPECT_FALSE(rp.converged);
+  expect_constrained_solver_beats_paper_method("monkey saddle greedy K=24", mesh, c);
+}
+
+TEST(Optimize, ConstrainedSolverBeatsPaperMethodOnSeashell)
+{
+  Mesh mesh = load("seashell.off");
+  Clustering c = add_clustering_maps(mesh);
+  c.K = 96;
+  TS::cluster_quads(mesh, TS::parameters::number_of_tiles(c.K).face_cluster_map(c.cluster)
+                            .face_orientation_map(c.orientation).random_seed(0u));
+  expect_constrained_solver_beats_paper_method("seashell K=96", mesh, c);
 }
 
 // The exact Lagrangian Hessian of the default solver against central

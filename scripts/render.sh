@@ -10,5 +10,5 @@ for tool in f3d xvfb-run; do
 done
 xvfb-run -a f3d "$in" --output "$out" --cells --scalars=RGBA --comp=-2 --edges \
   --resolution=1000,800 --up=+Z --camera-azimuth-angle=35 --camera-elevation-angle=30 \
-  --no-background "$@" >/dev/null 2>&1 || true
+  --camera-view-angle=23 --no-background "$@" >/dev/null 2>&1 || true
 [ -s "$out" ] || { echo "render: f3d wrote no image for $in" >&2; exit 1; }

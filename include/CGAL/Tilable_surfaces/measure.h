@@ -68,8 +68,9 @@ struct Tilability_measure
   /// The paper's normalized terms (its Table 1): both surfaces scaled by the
   /// same factor so that the input's largest bounding-box side is 1, then
   /// F_d / (number of vertices), F_f / (number of vertices), F_e / (number
-  /// of edges), F_a / (number of faces) and F_o / (number of faces), each term as the paper defines it (cyclic sums, fairness
-  /// of the result with the features of the input).
+  /// of edges), F_a / (number of faces) and F_o / (number of faces), each
+  /// term as the paper defines it (cyclic sums, fairness of the result with
+  /// the features of the input).
   Energy_terms normalized_terms;
 };
 

@@ -310,3 +310,32 @@ TEST(Optimize, LagrangianHessianMatchesFiniteDifferences)
   EXPECT_LE((fd - exact).norm(), 1e-6 * exact.norm());
   std::cout << "[ numbers  ] |W v - FD| / |W v| = " << (fd - exact).norm() / exact.norm() << "\n";
 }
+
+// The projection phase's volume quantity: its gradient against central
+// differences, its scale invariance, and its sensitivity to the height h of
+// a corner of a sliver (edges 1 and about 2e-3), by hand: 6V = 2e-3 h,
+// N = (x2 - x0) x (x3 - x1) = (0, 0, 4.4e-3) at h = 0, S = 2/3, so
+// dw/dh = 2e-3 / sqrt(|N|^2 S + 1e-4 S^3) = 0.307, where V / S^(3/2) has only
+// (2e-3 / 6) / S^(3/2) = 6.1e-4.
+TEST(Optimize, VolumeShapeSeesSliverHeights)
+{
+  namespace TSI = CGAL::Tilable_surfaces::internal;
+  const std::array<int, 4> item = {0, 1, 2, 3};
+  TSI::Point_matrix X(4, 3);
+  X << 0, 0, 0, 1, 0, 0, 1, 2e-3, 0, 0, 2.4e-3, 1e-4;
+  const TSI::Quantity w = TSI::volume_shape(item, X);
+  const double h = 1e-7;
+  for(int i = 0; i < 4; ++i)
+    for(int d = 0; d < 3; ++d)
+    {
+      TSI::Point_matrix Xp = X, Xm = X;
+      Xp(i, d) += h;
+      Xm(i, d) -= h;
+      const double fd = (TSI::volume_shape(item, Xp).value - TSI::volume_shape(item, Xm).value) / (2 * h);
+      EXPECT_NEAR(w.gradient[i][d], fd, 1e-6 * (1 + std::abs(fd)));
+    }
+  EXPECT_NEAR(TSI::volume_shape(item, TSI::Point_matrix(7.5 * X)).value, w.value, 1e-12);
+  const double S = 2.0 / 3.0, N2 = 4.4e-3 * 4.4e-3;
+  EXPECT_NEAR(w.gradient[3][2], 2e-3 / std::sqrt(N2 * S + 1e-4 * S * S * S), 0.01 * 0.307);
+  EXPECT_NEAR(TSI::scale_free_volume(item, X).gradient[3][2], 2e-3 / 6 / std::pow(S, 1.5), 0.01 * 6.1e-4);
+}

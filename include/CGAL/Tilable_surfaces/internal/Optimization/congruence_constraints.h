@@ -8,7 +8,8 @@
 // consecutive pair (a, b) of a group of energy_terms.h, in length units with
 // the length scale `ell`:
 // - squared lengths: ell (q_a - q_b) / (q_a + q_b);
-// - volumes: 6 ell (w_a - w_b), w = scale_free_volume().
+// - volumes: 6 ell (w_a - w_b), w = scale_free_volume(), or ell (w_a - w_b),
+//   w = volume_shape() (Volume_quantity).
 // Both are invariant under scaling of the surface (method notes §4b): with
 // absolute differences, shrinking the mesh lowers every residual, and far
 // from a solution the Gauss-Newton steps head for a collapsed surface. With
@@ -32,6 +33,12 @@ namespace CGAL {
 namespace Tilable_surfaces {
 namespace internal {
 
+// The SQP phase needs the constraints' exact Hessian, available for
+// scale_free_volume() only; the projection phase needs constraints whose
+// residual bounds the congruence error, which volume_shape() gives on slivers
+// too (energy_terms.h).
+enum Volume_quantity { SCALE_FREE_VOLUME, VOLUME_SHAPE };
+
 class Congruence_constraints
 {
   struct Row
@@ -46,7 +53,8 @@ class Congruence_constraints
   static constexpr int max_hessian_entries = 288;
 
 public:
-  Congruence_constraints(const Tilable_problem& problem, double ell) : m_ell(ell)
+  Congruence_constraints(const Tilable_problem& problem, double ell, Volume_quantity volume = SCALE_FREE_VOLUME)
+    : m_ell(ell), m_volume(volume)
   {
     auto add = [&](Quantity_kind kind, const Equality_groups& groups) {
       for(std::size_t g = 0; g < groups.number_of_groups(); ++g)
@@ -75,8 +83,9 @@ public:
     parallel_for(m, [&](std::size_t r) {
       const Row& row = m_rows[r];
       auto quantity = [&](const std::array<int, 4>& item) {
-        return row.kind == SQUARED_DISTANCE ? internal::evaluate(row.kind, item, X)
-                                            : scale_free_volume(item, X);
+        if(row.kind == SQUARED_DISTANCE)
+          return internal::evaluate(row.kind, item, X);
+        return m_volume == VOLUME_SHAPE ? volume_shape(item, X) : scale_free_volume(item, X);
       };
       const Quantity qa = quantity(*row.a), qb = quantity(*row.b);
       const Row_function f = row_function(row.kind, qa.value, qb.value);
@@ -108,6 +117,7 @@ public:
 
   // sum_r lambda_r d^2 c_r / dX^2 on the free unknowns (n x n, both
   // triangles). Same row-parallel, order-preserving assembly as evaluate().
+  // Constraints built with SCALE_FREE_VOLUME only.
   Eigen::SparseMatrix<double> lagrangian_hessian(const Point_matrix& X, const std::vector<int>& variable,
                                                  int number_of_unknowns, const Eigen::VectorXd& lambda) const
   {
@@ -180,13 +190,17 @@ private:
   Row_function row_function(Quantity_kind kind, double qa, double qb) const
   {
     if(kind == SIGNED_VOLUME)
-      return Row_function{6 * m_ell * (qa - qb), 6 * m_ell, -6 * m_ell, 0, 0, 0};
+    {
+      const double scale = m_volume == VOLUME_SHAPE ? m_ell : 6 * m_ell;
+      return Row_function{scale * (qa - qb), scale, -scale, 0, 0, 0};
+    }
     const double s = qa + qb, s2 = s * s, s3 = s2 * s;
     return Row_function{m_ell * (qa - qb) / s, 2 * m_ell * qb / s2, -2 * m_ell * qa / s2,
                         -4 * m_ell * qb / s3, 4 * m_ell * qa / s3, 2 * m_ell * (qa - qb) / s3};
   }
 
   double m_ell;
+  Volume_quantity m_volume;
   std::vector<Row> m_rows;
 };
 

@@ -42,8 +42,8 @@
 // Levenberg-Marquardt on min |c(X)|^2 in the metric H,
 // (J^T J + mu H) delta = -J^T c with mu ~ |c|, quadratic to a zero residual
 // where J has full rank, linear (rho ~ 0.9) where it does not. Its volume
-// rows are those of volume_shape() (Volume_quantity): the SQP phase's miss
-// the out-of-plane error of slivers (seashell K = 44: residual 1.2e-6,
+// rows are those of volume_shape() (Volume_quantity): the SQP phase's rows
+// miss the out-of-plane error of slivers (seashell K = 44: residual 1.2e-6,
 // congruence error 3e-4).
 //
 // The congruence error (Procrustes on every cluster) is only measured when

@@ -140,38 +140,25 @@ inline Energy_terms paper_energy(const Tilable_problem& problem, const Eigen::Sp
   return e;
 }
 
-// The normalizers of the scale-free volume quantities below:
-// N = (x2 - x0) x (x3 - x1), the quad's vector area times 2, so that
-// 6V = N . (x1 - x0); S, the mean of the 6 squared pair distances; and
-// P = |N|^2 S + epsilon S^3, with gradients over the 4 vertices.
-struct Volume_normalizer
+// S, the mean of the 6 squared pair distances of a quad's corners, and its
+// gradient over the 4 corners: the size that makes volumes scale free.
+struct Mean_squared_pair_distance
 {
-  static constexpr double epsilon = 1e-4; // keeps P > 0 on a collapsed quad
-  Eigen::Vector3d a, b;                  // the diagonals x2 - x0, x3 - x1
-  double M, S, P;                        // |N|^2, S, P
-  Eigen::Matrix<double, 12, 1> gM, gS, gP;
+  double value = 0;
+  Eigen::Matrix<double, 12, 1> gradient;
 
-  Volume_normalizer(const std::array<int, 4>& item, const Point_matrix& X)
+  Mean_squared_pair_distance(const std::array<int, 4>& item, const Point_matrix& X)
   {
-    a = (X.row(item[2]) - X.row(item[0])).transpose();
-    b = (X.row(item[3]) - X.row(item[1])).transpose();
-    M = a.cross(b).squaredNorm();
-    const Eigen::Vector3d ga = 2 * (b.squaredNorm() * a - a.dot(b) * b),
-                          gb = 2 * (a.squaredNorm() * b - a.dot(b) * a);
-    gM << -ga, -gb, ga, gb;
-    S = 0;
     for(int i = 0; i < 4; ++i)
     {
-      gS.segment<3>(3 * i).setZero();
+      gradient.segment<3>(3 * i).setZero();
       for(int j = 0; j < 4; ++j)
       {
         const Eigen::Vector3d e = (X.row(item[i]) - X.row(item[j])).transpose();
-        S += e.squaredNorm() / 12.0; // each pair twice
-        gS.segment<3>(3 * i) += e / 3.0;
+        value += e.squaredNorm() / 12.0; // each pair twice
+        gradient.segment<3>(3 * i) += e / 3.0;
       }
     }
-    P = M * S + epsilon * S * S * S;
-    gP = S * gM + (M + 3 * epsilon * S * S) * gS;
   }
 };
 
@@ -180,30 +167,41 @@ struct Volume_normalizer
 inline Quantity scale_free_volume(const std::array<int, 4>& item, const Point_matrix& X)
 {
   Quantity q = evaluate(SIGNED_VOLUME, item, X);
-  const Volume_normalizer z(item, X);
-  const double factor = 1.0 / std::pow(z.S, 1.5);
+  const Mean_squared_pair_distance S(item, X);
+  const double factor = 1.0 / std::pow(S.value, 1.5);
   for(int i = 0; i < 4; ++i)
-    q.gradient[i] = factor * q.gradient[i] - 1.5 * q.value * factor / z.S * z.gS.segment<3>(3 * i);
+    q.gradient[i] = factor * q.gradient[i] - 1.5 * q.value * factor / S.value * S.gradient.segment<3>(3 * i);
   q.value *= factor;
   return q;
 }
 
-// w = 6V / sqrt(P): the volume quantity of the projection phase,
+// w = 6V / sqrt(P), P = |N|^2 S + epsilon S^3, N = (x2 - x0) x (x3 - x1) (so
+// that 6V = N . (x1 - x0)): the volume quantity of the projection phase,
 // about the distance of x1 from the plane through x0 parallel to both
 // diagonals, over sqrt(S). It does not change with scale, and a unit move of
 // a corner out of that plane changes it by about 1 / sqrt(S) whatever the
-// quad's proportions. V / S^(3/2) does not have this:
-// on a sliver (seashell K = 44: two edges of 0.17, two of 4e-4) it moved by
-// width / sqrt(S) times less, so a residual of 1e-6 let the instances keep
-// mirrored heights (congruence error 3e-4). With the edges and diagonals of
-// instances equal, so are S and |N|, and equal w means equal volume.
+// quad's proportions. V / S^(3/2) does not have this: on a sliver (seashell
+// K = 44: two edges of 0.17, two of 4e-4) it moved by width / sqrt(S) times
+// less, so a residual of 1e-6 let the instances keep mirrored heights
+// (congruence error 3e-4). With the edges and diagonals of instances equal,
+// so are S and |N|, and equal w means equal volume.
 inline Quantity volume_shape(const std::array<int, 4>& item, const Point_matrix& X)
 {
+  const double epsilon = 1e-4; // keeps P > 0 on a collapsed quad
   Quantity q = evaluate(SIGNED_VOLUME, item, X);
-  const Volume_normalizer z(item, X);
-  const double r = 1 / std::sqrt(z.P);
+  const Mean_squared_pair_distance S(item, X);
+  const Eigen::Vector3d a = (X.row(item[2]) - X.row(item[0])).transpose(),
+                        b = (X.row(item[3]) - X.row(item[1])).transpose();
+  const double M = a.cross(b).squaredNorm();
+  const Eigen::Vector3d ga = 2 * (b.squaredNorm() * a - a.dot(b) * b),
+                        gb = 2 * (a.squaredNorm() * b - a.dot(b) * a);
+  Eigen::Matrix<double, 12, 1> gM;
+  gM << -ga, -gb, ga, gb;
+  const double P = M * S.value + epsilon * S.value * S.value * S.value;
+  const Eigen::Matrix<double, 12, 1> gP = S.value * gM + (M + 3 * epsilon * S.value * S.value) * S.gradient;
+  const double r = 1 / std::sqrt(P);
   for(int i = 0; i < 4; ++i)
-    q.gradient[i] = 6 * r * q.gradient[i] - 3 * q.value * r / z.P * z.gP.segment<3>(3 * i);
+    q.gradient[i] = 6 * r * q.gradient[i] - 3 * q.value * r / P * gP.segment<3>(3 * i);
   q.value *= 6 * r;
   return q;
 }

@@ -61,20 +61,16 @@ inline Item_hessian signed_volume_hessian(const std::array<int, 4>& item, const 
 inline Item_hessian scale_free_volume_hessian(const std::array<int, 4>& item, const Point_matrix& X)
 {
   const Quantity V = evaluate(SIGNED_VOLUME, item, X);
-  Eigen::Matrix<double, 12, 1> gV, gS;
+  const Mean_squared_pair_distance mean(item, X);
+  const double S = mean.value;
+  const Eigen::Matrix<double, 12, 1>& gS = mean.gradient;
+  Eigen::Matrix<double, 12, 1> gV;
   Item_hessian HS;
-  double S = 0;
   for(int i = 0; i < 4; ++i)
   {
     gV.segment<3>(3 * i) = V.gradient[i];
-    gS.segment<3>(3 * i).setZero();
     for(int j = 0; j < 4; ++j)
-    {
-      const Eigen::Vector3d e = (X.row(item[i]) - X.row(item[j])).transpose();
-      S += e.squaredNorm() / 12.0;
-      gS.segment<3>(3 * i) += e / 3.0;
       HS.block<3, 3>(3 * i, 3 * j) = ((i == j ? 4.0 : 0.0) - 1.0) / 3.0 * Eigen::Matrix3d::Identity();
-    }
   }
   const double p = std::pow(S, -1.5); // S^(-3/2)
   return p * signed_volume_hessian(item, X) - 1.5 * p / S * (gV * gS.transpose() + gS * gV.transpose()) +

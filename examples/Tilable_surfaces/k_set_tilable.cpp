@@ -333,8 +333,10 @@ int run(const Options& o)
   const TS::Tilability_measure& m = result.optimization.measure;
   std::cerr << "[k_set_tilable] K = " << m.number_of_clusters << ", DOF = " << m.degree_of_flexibility
             << ", congruence error " << std::scientific << std::setprecision(2) << m.congruence_error
-            << ", approximation error max " << m.max_approximation_error << " mean "
-            << m.mean_approximation_error << " (of the bbox diagonal), " << std::defaultfloat
+            << ", Hausdorff distance to the input max " << m.hausdorff_distance << " mean "
+            << m.mean_symmetric_distance << " (of the bbox diagonal; "
+            << m.in_input_edge_lengths(m.hausdorff_distance) << " edge lengths), displacement max "
+            << m.max_displacement << ", " << std::defaultfloat
             << std::fixed << std::setprecision(2) << timer.time() << " s\n";
   if(!result.is_tilable())
     std::cerr << "[k_set_tilable] WARNING: not every panel fits its mold within 1e-6 of the mean "

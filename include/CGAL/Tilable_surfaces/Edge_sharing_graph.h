@@ -44,6 +44,13 @@ namespace Tilable_surfaces {
 /// The components are kept in a union-find structure, so merging two clusters
 /// amends the graph in O(1) amortized unions instead of rebuilding it.
 ///
+/// The graph also says what a clustering forces on the surface: every edge of
+/// a component must take one length, so the spread of the input's edge
+/// lengths within each component (`length_deviation()`) is a cost that shape
+/// dissimilarity alone does not see. Two quads of different rings of a tube
+/// may have the same shape, but a cluster holding both links the edges of
+/// the two rings, and through their neighbours every ring, to one length.
+///
 /// \tparam PolygonMesh a model of `FaceListGraph` whose faces are quads.
 template <typename PolygonMesh>
 class Edge_sharing_graph
@@ -82,6 +89,8 @@ public:
   ///
   /// \cgalNamedParamsBegin
     ///   \cgalParamNBegin{face_index_map} indices of the faces, for messages \cgalParamNEnd
+  ///   \cgalParamNBegin{vertex_point_map} the points, for the edge lengths of
+  ///     `length_deviation()` \cgalParamNEnd
   /// \cgalNamedParamsEnd
   /// Mesh edges are identified by the mesh's internal edge index
   /// (`CGAL::get_initialized_edge_index_map(pm)`); `pm` must not change
@@ -96,6 +105,9 @@ public:
     : m_edge_index_map(CGAL::get_initialized_edge_index_map(pm))
   {
     const auto fim = CGAL::get_initialized_face_index_map(pm, np);
+    const auto vpm = parameters::choose_parameter(
+      parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+      get_const_property_map(CGAL::vertex_point, pm));
     std::vector<std::size_t> edge_nodes(num_edges(pm), no_node());
     reset(number_of_clusters);
 
@@ -125,7 +137,11 @@ public:
         const std::size_t node = 4 * std::size_t(c) + orientation.template_edge(j);
         std::size_t& edge_node = edge_nodes[get(m_edge_index_map, edge(h, pm))];
         if(edge_node == no_node())
+        {
           edge_node = node;
+          m_lengths[find(node)].add(CGAL::to_double(
+            CGAL::approximate_sqrt(CGAL::squared_distance(get(vpm, source(h, pm)), get(vpm, target(h, pm))))));
+        }
         else
           link(edge_node, node);
       }
@@ -170,6 +186,42 @@ public:
     return {{component(c, 0), component(c, 1), component(c, 2), component(c, 3)}};
   }
 
+  /// The sum over the components of the squared deviations of the input
+  /// lengths of their mesh edges from the component's mean length: how far,
+  /// in squared length, the clustering forces the edge lengths to move.
+  double length_deviation() const { return m_length_deviation; }
+
+  /// `length_deviation()` after `merge_clusters(kept, removed,
+  /// correspondence)`, without merging.
+  double length_deviation_after_merge(std::size_t kept, std::size_t removed,
+                                      Quad_orientation correspondence) const
+  {
+    // At most 8 roots take part: a union-find over linear scans.
+    std::array<std::size_t, 8> root, up;
+    std::array<Length_statistics, 8> merged;
+    std::size_t n = 0;
+    auto local = [&](std::size_t node) {
+      const std::size_t r = find(node);
+      for(std::size_t i = 0; i < n; ++i)
+        if(root[i] == r) return i;
+      root[n] = r; up[n] = n; merged[n] = m_lengths[r];
+      return n++;
+    };
+    auto top = [&](std::size_t i) { while(up[i] != i) i = up[i]; return i; };
+    double deviation = m_length_deviation;
+    for(int k = 0; k < 4; ++k)
+    {
+      const std::size_t a = top(local(4 * kept + k)),
+                        b = top(local(4 * removed + correspondence.face_edge(k)));
+      if(a == b)
+        continue;
+      deviation += merged[a].deviation_if_joined(merged[b]);
+      merged[a].join(merged[b]);
+      up[b] = a;
+    }
+    return deviation;
+  }
+
   /// A property map with the component of every mesh edge. It reads this
   /// graph, so it must not outlive it.
   Edge_component_map edge_component_map() const { return Edge_component_map(this); }
@@ -197,6 +249,24 @@ public:
 private:
   static std::size_t no_node() { return (std::numeric_limits<std::size_t>::max)(); }
 
+  // Count, sum and sum of squares of the lengths of a component's mesh edges.
+  struct Length_statistics
+  {
+    double count = 0, sum = 0, sum_of_squares = 0;
+    void add(double length) { count += 1; sum += length; sum_of_squares += length * length; }
+    // The increase of the squared deviations from the mean if joined with `o`.
+    double deviation_if_joined(const Length_statistics& o) const
+    {
+      if(count == 0 || o.count == 0) return 0.0;
+      const double gap = sum / count - o.sum / o.count;
+      return count * o.count / (count + o.count) * gap * gap;
+    }
+    void join(const Length_statistics& o)
+    {
+      count += o.count; sum += o.sum; sum_of_squares += o.sum_of_squares;
+    }
+  };
+
   void reset(std::size_t number_of_clusters)
   {
     const std::size_t n = 4 * number_of_clusters;
@@ -204,6 +274,8 @@ private:
     m_sets = Disjoint_sets(n);
     for(std::size_t i = 0; i < n; ++i)
       m_sets.make_set(i);
+    m_lengths.assign(n, Length_statistics());
+    m_length_deviation = 0;
     m_number_of_components = n;
     m_ids_valid = false;
   }
@@ -213,7 +285,11 @@ private:
     const std::size_t ra = find(a), rb = find(b);
     if(ra == rb)
       return;
+    m_length_deviation += m_lengths[ra].deviation_if_joined(m_lengths[rb]);
+    Length_statistics joined = m_lengths[ra];
+    joined.join(m_lengths[rb]);
     m_sets.link(ra, rb);
+    m_lengths[find(ra)] = joined;
     --m_number_of_components;
     m_ids_valid = false;
   }
@@ -247,6 +323,8 @@ private:
   std::vector<bool> m_alive;
   mutable Disjoint_sets m_sets{0};       // find_set() compresses paths
   std::size_t m_number_of_components = 0;
+  std::vector<Length_statistics> m_lengths; // valid at the roots
+  double m_length_deviation = 0;
   mutable std::vector<std::size_t> m_component_id;
   mutable bool m_ids_valid = false;
 };

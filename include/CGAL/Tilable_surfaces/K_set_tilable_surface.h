@@ -22,12 +22,43 @@
 
 #include <boost/property_map/property_map.hpp>
 
+#include <algorithm>
+#include <limits>
 #include <memory>
+#include <string>
+#include <utility>
 
 #include <vector>
 
 namespace CGAL {
 namespace Tilable_surfaces {
+namespace internal {
+
+// Visitors may have a `phase(name, seconds)` hook (progress reports); the
+// optimization visitors of `optimize_tilable_surface()` need not.
+template <typename Visitor>
+auto notify_phase(Visitor& visitor, const char* name, double seconds, int)
+  -> decltype(visitor.phase(name, seconds), void())
+{
+  visitor.phase(name, seconds);
+}
+
+template <typename Visitor>
+void notify_phase(Visitor&, const char*, double, long) {}
+
+// Whether result `a` is better than `b`: tilable before not, then closer to
+// the input (symmetric Hausdorff distance), or, neither being tilable, the
+// smaller congruence error.
+inline bool is_better(const Optimization_result& a, const Optimization_result& b)
+{
+  if(a.converged != b.converged)
+    return a.converged;
+  if(!a.converged)
+    return a.measure.congruence_error < b.measure.congruence_error;
+  return a.measure.hausdorff_distance < b.measure.hausdorff_distance;
+}
+
+} // namespace internal
 
 /// \ingroup PkgTilableSurfacesRef
 /// A quad mesh on its way to a K-set tilable surface, one step at a time, as
@@ -96,9 +127,13 @@ public:
   template <typename CGAL_NP_TEMPLATE_PARAMETERS>
   const Clustering_result& cluster(const CGAL_NP_CLASS& np)
   {
+    restore_input();
     m_clustering = cluster_quads(m_mesh, with_own_maps(np));
     m_number_of_clusters = m_clustering.cluster_sizes.size();
     m_is_clustered = true;
+    m_policy = internal::orientation_policy(np);
+    m_similarity_threshold = parameters::choose_parameter(
+      parameters::get_parameter(np, internal_np::similarity_threshold), 0.01);
     return m_clustering;
   }
 
@@ -160,6 +195,143 @@ public:
                                            face_orientation_map(), parameters::face_index_map(m_fim));
   }
 
+  /// Makes candidate `i` of the pool of the last `cluster()`
+  /// (`clustering().candidates`) the current clustering, with S-quads and
+  /// flexible orientations computed as `cluster_quads()` does for the one it
+  /// returns, from the input positions. Returns its degree of flexibility.
+  std::size_t use_candidate(std::size_t i)
+  {
+    if(i >= m_clustering.candidates.size())
+      throw Invalid_input("no clustering candidate " + std::to_string(i), Invalid_input::PARAMETER);
+    restore_input();
+    const std::vector<std::size_t>& label = m_clustering.candidates[i].face_cluster;
+    const std::size_t k = m_number_of_clusters;
+    const auto np = parameters::vertex_point_map(m_vpm).face_index_map(m_fim);
+    const internal::Cluster_shapes shapes = internal::finished_clustering(
+      m_mesh, m_fim, m_vpm, internal::face_quads(m_mesh, m_fim, np), label, k, m_policy,
+      m_similarity_threshold * mean_edge_length(m_mesh, np));
+    for(std::size_t f = 0; f < label.size(); ++f)
+    {
+      m_cluster[f] = int(label[f]);
+      m_orientation[f] = shapes.orientation[f].index();
+    }
+    return shapes.degree_of_flexibility;
+  }
+
+  /// The displacement the default solver is predicted to need for the
+  /// current clustering (`predict_displacement()`), from the input
+  /// positions; takes the parameters of `optimize()`.
+  template <typename CGAL_NP_TEMPLATE_PARAMETERS>
+  Displacement_prediction predict_displacement(const CGAL_NP_CLASS& np = parameters::default_values())
+  {
+    require_clustering();
+    restore_input();
+    return Tilable_surfaces::predict_displacement(m_mesh, with_own_maps(np));
+  }
+
+  /// Looks for the tilable result closest to the input among several
+  /// clusterings, then improves it; the default of `make_k_set_tilable()`.
+  ///
+  /// -# The candidates of the last `cluster()` are ranked two ways: by their
+  ///    predicted displacement (`predict_displacement()`), and by the spread
+  ///    of the input's edge lengths that their edge-sharing graph ties
+  ///    together (`Clustering_candidate::length_deviation`). Shape
+  ///    similarity and DOF do not say how far a clustering moves the surface;
+  ///    these do, the first to first order, the second for the long-range
+  ///    equalities that the linearization underrates (tunnel stand-in,
+  ///    K = 10: the ring clustering ranks 12th by prediction, first by
+  ///    spread, and ends 2x closer than the first by prediction). Taking the
+  ///    two rankings in turn, the `number_of_optimized_candidates` first are
+  ///    optimized fully from the input.
+  /// -# Then `number_of_improvement_rounds` rounds of edits, K fixed: the
+  ///    cluster whose instances moved most (mean off-input distance of its
+  ///    corners) is split in two, and of the pairs of clusters whose merge
+  ///    spreads the input's edge lengths least
+  ///    (`Edge_sharing_graph::length_deviation_after_merge()`), the one with
+  ///    the smallest predicted displacement is merged; orientations are
+  ///    re-tagged and the result optimized again from the input.
+  ///
+  /// A result replaces the best one only if it is better: tilable
+  /// (`congruence_tolerance`) before not, then the smaller symmetric
+  /// Hausdorff distance (or, among non-tilable ones, the smaller congruence
+  /// error). So the rounds never return a worse result than the candidates.
+  /// The mesh, the maps and `optimization()` hold the best result at the
+  /// end. Takes the parameters of `optimize()`; the visitor's optional
+  /// `phase(name, seconds)` hook is called after each candidate and round.
+  template <typename CGAL_NP_TEMPLATE_PARAMETERS>
+  const Optimization_result& optimize_closest(const CGAL_NP_CLASS& np = parameters::default_values())
+  {
+    using parameters::choose_parameter;
+    using parameters::get_parameter;
+    require_clustering();
+    if(m_clustering.candidates.empty())
+      return optimize(np);
+    typedef typename CGAL::internal_np::Lookup_named_param_def<
+      CGAL::internal_np::visitor_t, CGAL_NP_CLASS, Default_optimization_visitor>::type Visitor;
+    Visitor visitor = choose_parameter<Visitor>(get_parameter(np, CGAL::internal_np::visitor));
+    const std::size_t optimized = (std::max)(std::size_t(1), std::size_t(choose_parameter(
+      get_parameter(np, internal_np::number_of_optimized_candidates), 2)));
+    const int rounds = choose_parameter(get_parameter(np, internal_np::number_of_improvement_rounds), 2);
+    CGAL::Real_timer timer;
+    timer.start();
+
+    // 1. Candidates ranked two ways, taken in turn: by predicted
+    // displacement, and by the spread of edge lengths they tie together.
+    std::vector<std::pair<double, std::size_t> > by_prediction, by_spread;
+    for(std::size_t i = 0; i < m_clustering.candidates.size(); ++i)
+    {
+      use_candidate(i);
+      Clustering_candidate& candidate = m_clustering.candidates[i];
+      candidate.predicted_displacement = predict_displacement(np).max;
+      by_prediction.push_back({candidate.predicted_displacement, i});
+      by_spread.push_back({candidate.length_deviation, i});
+    }
+    const int user_iterations =
+      choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 300);
+    std::sort(by_prediction.begin(), by_prediction.end());
+    std::sort(by_spread.begin(), by_spread.end());
+    std::vector<std::size_t> ranked;
+    for(std::size_t r = 0; r < by_prediction.size(); ++r)
+      for(std::size_t i : {by_prediction[r].second, by_spread[r].second})
+        if(std::find(ranked.begin(), ranked.end(), i) == ranked.end())
+          ranked.push_back(i);
+    internal::notify_phase(visitor, "displacement prediction", timer.time(), 0);
+    State best;
+    for(std::size_t r = 0; r < (std::min)(optimized, ranked.size()); ++r)
+    {
+      timer.reset();
+      use_candidate(ranked[r]);
+      // Later solves get a few times the iterations of the best so far: one
+      // that cannot converge in them is unlikely to end closer, and
+      // non-converging solves would otherwise cost the whole budget.
+      optimize(np.number_of_iterations(r == 0 ? user_iterations : iteration_cap(best, user_iterations)));
+      if(r == 0 || internal::is_better(m_optimization, best.optimization))
+      {
+        best = state();
+        m_clustering.chosen_candidate = ranked[r];
+      }
+      internal::notify_phase(visitor, "candidate optimization", timer.time(), 0);
+    }
+    set_state(best);
+
+    // 2. Improvement rounds.
+    for(int round = 0; round < rounds && m_number_of_clusters > 1; ++round)
+    {
+      timer.reset();
+      if(!improvement_edit(np))
+        break;
+      optimize(np.number_of_iterations(iteration_cap(best, user_iterations)));
+      if(internal::is_better(m_optimization, best.optimization))
+        best = state();
+      set_state(best);
+      internal::notify_phase(visitor, "improvement round", timer.time(), 0);
+    }
+    m_clustering.choice_reason = "closest result among the " + std::to_string((std::min)(optimized, ranked.size())) +
+      " candidates of smallest predicted displacement or length spread, then " + std::to_string(rounds) +
+      " improvement rounds; " + m_clustering.choice_reason;
+    return m_optimization;
+  }
+
   /// The degree of flexibility of the current clustering.
   std::size_t degree_of_flexibility() { return edge_sharing_graph().degree_of_flexibility(); }
 
@@ -203,6 +375,7 @@ public:
   const Optimization_result& optimize(const CGAL_NP_CLASS& np = parameters::default_values())
   {
     require_clustering();
+    restore_input();
     m_optimization = optimize_tilable_surface(m_mesh, with_own_maps(np));
     return m_optimization;
   }
@@ -244,6 +417,123 @@ public:
   }
 
 private:
+  // What the fidelity search keeps of the best result so far.
+  struct State
+  {
+    std::vector<Point> points;
+    std::vector<int> cluster, orientation;
+    std::size_t number_of_clusters = 0;
+    Optimization_result optimization;
+  };
+
+  State state() const
+  {
+    State st;
+    const Vertex_index_map vim = CGAL::get_initialized_vertex_index_map(m_mesh);
+    st.points.resize(num_vertices(m_mesh));
+    for(auto v : vertices(m_mesh))
+      st.points[get(vim, v)] = get(m_vpm, v);
+    st.cluster = m_cluster;
+    st.orientation = m_orientation;
+    st.number_of_clusters = m_number_of_clusters;
+    st.optimization = m_optimization;
+    return st;
+  }
+
+  void set_state(const State& st)
+  {
+    write_points(st.points);
+    m_cluster = st.cluster;
+    m_orientation = st.orientation;
+    m_number_of_clusters = st.number_of_clusters;
+    m_optimization = st.optimization;
+  }
+
+  void write_points(const std::vector<Point>& points)
+  {
+    const Vertex_index_map vim = CGAL::get_initialized_vertex_index_map(m_mesh);
+    for(auto v : vertices(m_mesh))
+      put(m_vpm, v, points[get(vim, v)]);
+  }
+
+  // Three times the iterations the best result took, at least 30, at most
+  // the user's limit.
+  static int iteration_cap(const State& best, int user_iterations)
+  {
+    return (std::min)(user_iterations, (std::max)(30, 3 * best.optimization.iterations));
+  }
+
+  // The input positions back in the mesh: clustering, edits and solves
+  // start from the input, never from a result.
+  void restore_input() { write_points(m_input_points); }
+
+  // One edit of an improvement round on the current (best) result: split
+  // the cluster that moved most, merge the cheapest pair (see
+  // optimize_closest()), re-tag. False when no edit applies.
+  template <typename NP>
+  bool improvement_edit(const NP& np)
+  {
+    const Vertex_index_map vim = CGAL::get_initialized_vertex_index_map(m_mesh);
+    std::vector<double> moved(m_number_of_clusters, 0.0);
+    std::vector<std::size_t> size(m_number_of_clusters, 0);
+    for(auto f : faces(m_mesh))
+    {
+      double sum = 0;
+      for(auto v : CGAL::vertices_around_face(halfedge(f, m_mesh), m_mesh))
+        sum += CGAL::to_double(CGAL::approximate_sqrt(
+          CGAL::squared_distance(get(m_vpm, v), m_input_points[get(vim, v)])));
+      moved[std::size_t(m_cluster[get(m_fim, f)])] += sum;
+      ++size[std::size_t(m_cluster[get(m_fim, f)])];
+    }
+    std::size_t worst = m_number_of_clusters;
+    for(std::size_t c = 0; c < m_number_of_clusters; ++c)
+      if(size[c] >= 2 && (worst == m_number_of_clusters ||
+                          moved[c] / double(size[c]) > moved[worst] / double(size[worst])))
+        worst = c;
+    if(worst == m_number_of_clusters)
+      return false;
+    restore_input();
+    split_cluster(worst);
+
+    // The pairs that spread the edge lengths least, judged by prediction.
+    const Edge_sharing_graph<PolygonMesh> graph = edge_sharing_graph();
+    std::vector<std::pair<double, std::pair<std::size_t, std::size_t> > > pairs;
+    const std::size_t new_part = m_number_of_clusters - 1;
+    for(std::size_t a = 0; a < m_number_of_clusters; ++a)
+      for(std::size_t b = a + 1; b < m_number_of_clusters; ++b)
+      {
+        if(a == worst && b == new_part)
+          continue; // that would undo the split
+        // The correspondence is not known before the merge: the least spread.
+        double spread = std::numeric_limits<double>::infinity();
+        for(int o = 0; o < 8; ++o)
+          spread = (std::min)(spread, graph.length_deviation_after_merge(a, b, Quad_orientation(o)));
+        pairs.push_back({spread, {a, b}});
+      }
+    if(pairs.empty())
+      return false;
+    std::sort(pairs.begin(), pairs.end());
+    pairs.resize((std::min)(pairs.size(), std::size_t(4)));
+    const State split = state();
+    double best_prediction = std::numeric_limits<double>::infinity();
+    std::pair<std::size_t, std::size_t> best_pair(0, 1);
+    for(const auto& p : pairs)
+    {
+      set_state(split);
+      merge_clusters(p.second.first, p.second.second);
+      const double prediction = predict_displacement(np).max;
+      if(prediction < best_prediction)
+      {
+        best_prediction = prediction;
+        best_pair = p.second;
+      }
+    }
+    set_state(split);
+    merge_clusters(best_pair.first, best_pair.second);
+    retag_orientations();
+    return true;
+  }
+
   // The parameters every step shares: the object's maps and indices.
   auto own_maps()
   {
@@ -281,6 +571,8 @@ private:
   std::vector<int> m_orientation;
   std::size_t m_number_of_clusters = 0;
   bool m_is_clustered = false;
+  Orientation_policy m_policy = PROPER_RIGID_MOTIONS;
+  double m_similarity_threshold = 0.01;
   Clustering_result m_clustering;
   Optimization_result m_optimization;
 };

@@ -31,8 +31,10 @@ template <typename PolygonMesh, typename NP>
 struct Editable_clustering
 {
   typedef typename CGAL::GetInitializedFaceIndexMap<PolygonMesh, NP>::const_type Face_index_map;
+  typedef typename CGAL::GetVertexPointMap<PolygonMesh, NP>::const_type Vertex_point_map;
 
   Face_index_map fim;
+  Vertex_point_map vpm;
   std::vector<Quad> quads;
   std::vector<std::size_t> label;
   std::vector<Quad_orientation> orientation;
@@ -40,6 +42,8 @@ struct Editable_clustering
 
   Editable_clustering(const PolygonMesh& pm, const NP& np)
     : fim(CGAL::get_initialized_face_index_map(pm, np))
+    , vpm(parameters::choose_parameter(parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+                                       get_const_property_map(CGAL::vertex_point, pm)))
   {
     namespace TS_np = CGAL::Tilable_surfaces::internal_np;
     static_assert(!parameters::is_default_parameter<NP, TS_np::face_cluster_t>::value,
@@ -142,7 +146,7 @@ std::size_t merge_clusters(const PolygonMesh& pm, std::size_t a, std::size_t b,
     internal::fast_best_match(s_quad(kept), s_quad(removed), policy).orientation;
 
   Edge_sharing_graph<PolygonMesh> graph =
-    internal::edge_sharing_graph(pm, e.fim, e.label, e.orientation, e.k);
+    internal::edge_sharing_graph(pm, e.fim, e.vpm, e.label, e.orientation, e.k);
   const std::size_t dof = graph.merge_clusters(kept, removed, correspondence);
 
   for(std::size_t f : members[removed])
@@ -199,7 +203,7 @@ std::size_t split_cluster(const PolygonMesh& pm, std::size_t c, const CGAL_NP_CL
       e.orientation[f] = internal::fast_best_match(s_quad, e.quads[f], policy).orientation;
   }
   e.write(pm, np);
-  return internal::edge_sharing_graph(pm, e.fim, e.label, e.orientation, e.k + 1)
+  return internal::edge_sharing_graph(pm, e.fim, e.vpm, e.label, e.orientation, e.k + 1)
            .degree_of_flexibility();
 }
 
@@ -224,7 +228,7 @@ std::size_t retag_orientations(const PolygonMesh& pm, const CGAL_NP_CLASS& np)
                                                   shapes.orientation, policy,
                                                   tau * mean_edge_length(pm, np));
   e.write(pm, np);
-  return internal::edge_sharing_graph(pm, e.fim, e.label, e.orientation, e.k)
+  return internal::edge_sharing_graph(pm, e.fim, e.vpm, e.label, e.orientation, e.k)
            .degree_of_flexibility();
 }
 

@@ -20,6 +20,7 @@
 #include <CGAL/Tilable_surfaces/internal/Clustering/initial_clustering.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/kmeans.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/merge_costs.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/strip_candidates.h>
 
 #include <CGAL/Random.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -57,7 +58,7 @@ enum Clustering_path
 struct Clustering_candidate
 {
   /// Where the configuration comes from.
-  enum Origin { HIERARCHICAL, KMEANS };
+  enum Origin { HIERARCHICAL, KMEANS, QUAD_STRIPS };
   Origin origin = HIERARCHICAL;  ///< the search that produced it
   /// Its weight, in the units of the clustering path (see `Clustering_result::path`):
   /// sum of pairwise dissimilarities on the exact path, sum of pairwise squared
@@ -66,8 +67,17 @@ struct Clustering_candidate
   /// Its degree of flexibility, with each face oriented as its initial cluster's
   /// leader (hierarchical) or as the face nearest to its k-means centre.
   std::size_t degree_of_flexibility = 0;
+  /// Its length deviation (`Edge_sharing_graph::length_deviation()`), with
+  /// the same orientations.
+  double length_deviation = 0;
   /// The selection score (lower is better); see `cluster_quads()`.
   double score = 0;
+  /// Its predicted displacement (`Displacement_prediction::max`) once
+  /// `K_set_tilable_surface::optimize_closest()` ranked it; else 0.
+  double predicted_displacement = 0;
+  /// The cluster of every face (by face index), 0..K-1 numbered by first
+  /// face; `K_set_tilable_surface` optimizes the most promising candidates.
+  std::vector<std::size_t> face_cluster;
 };
 
 /// \ingroup PkgTilableSurfacesRef
@@ -129,46 +139,20 @@ std::vector<Quad> face_quads(const PolygonMesh& pm, FaceIndexMap fim, const NP& 
   return quads;
 }
 
-// Cluster ids renumbered by first face: cluster of face 0 is 0, and so on.
-inline std::size_t relabel_by_first_face(std::vector<std::size_t>& label)
+// The S-quads of labelling `label` (Procrustes means of the quads of `pm`),
+// each face tagged with an admissible orientation chosen for flexibility
+// (flexible_orientations(), near-ties within `tau`), and the resulting DOF.
+template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
+Cluster_shapes finished_clustering(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
+                                   const std::vector<Quad>& quads, const std::vector<std::size_t>& label,
+                                   std::size_t k, Orientation_policy policy, double tau)
 {
-  std::vector<std::size_t> id;
-  std::size_t next = 0;
-  for(std::size_t& l : label)
-  {
-    if(l >= id.size()) id.resize(l + 1, no_index());
-    if(id[l] == no_index()) id[l] = next++;
-    l = id[l];
-  }
-  return next;
-}
-
-// Splits the largest initial clusters until there are k of them.
-inline void split_to(std::size_t k, const std::vector<Quad>& quads,
-                     const std::vector<Quad_descriptor>& descriptors, Orientation_policy policy,
-                     CGAL::Random& random, Initial_clustering& init)
-{
-  while(init.leaders.size() < k)
-  {
-    std::vector<std::vector<std::size_t> > members =
-      cluster_members(init.cluster, init.leaders.size());
-    std::size_t largest = 0;
-    for(std::size_t c = 1; c < members.size(); ++c)
-      if(members[c].size() > members[largest].size()) largest = c;
-    const std::vector<bool> second =
-      split_in_two(quads, descriptors, members[largest], policy, random);
-    const std::size_t c = init.leaders.size();
-    std::size_t leader = no_index();
-    for(std::size_t i = 0; i < second.size(); ++i)
-    {
-      if(!second[i]) continue;
-      const std::size_t f = members[largest][i];
-      if(leader == no_index()) leader = f;
-      init.cluster[f] = c;
-      init.orientation[f] = fast_best_match(quads[leader], quads[f], policy).orientation;
-    }
-    init.leaders.push_back(leader);
-  }
+  Cluster_shapes shapes = cluster_shapes(quads, label, k, policy);
+  shapes.orientation =
+    flexible_orientations(pm, fim, quads, label, shapes.s_quads, shapes.orientation, policy, tau);
+  shapes.degree_of_flexibility =
+    edge_sharing_graph(pm, fim, vpm, label, shapes.orientation, k).degree_of_flexibility();
+  return shapes;
 }
 
 } // namespace internal
@@ -281,8 +265,10 @@ Clustering_result cluster_quads(const PolygonMesh& pm, const CGAL_NP_CLASS& np)
   const double relative_threshold =
     choose_parameter(get_parameter(np, TS_np::similarity_threshold), 0.01);
   const double lambda = choose_parameter(get_parameter(np, TS_np::flexibility_penalty), 0.5);
+  const double mu = choose_parameter(get_parameter(np, TS_np::structure_penalty), 1.0);
   const bool use_kmeans = choose_parameter(get_parameter(np, TS_np::use_kmeans_candidate), true);
   const bool auto_merge = choose_parameter(get_parameter(np, TS_np::use_auto_merge), true);
+  const bool use_strips = choose_parameter(get_parameter(np, TS_np::use_strip_candidates), true);
   const Clustering_path requested_path =
     choose_parameter(get_parameter(np, TS_np::clustering_path), AUTOMATIC_PATH);
   const std::size_t exact_limit =
@@ -356,11 +342,14 @@ Clustering_result cluster_quads(const PolygonMesh& pm, const CGAL_NP_CLASS& np)
   for(std::size_t c : init.cluster) ++faces_per_cluster[c];
   std::vector<Quad> leaders(big_n);
   for(std::size_t c = 0; c < big_n; ++c) leaders[c] = quads[init.leaders[c]];
+  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                    get_const_property_map(CGAL::vertex_point, pm));
   const Edge_sharing_graph<PolygonMesh> initial_graph =
-    internal::edge_sharing_graph(pm, fim, init.cluster, init.orientation, big_n);
+    internal::edge_sharing_graph(pm, fim, vpm, init.cluster, init.orientation, big_n);
   const std::size_t d0 = initial_graph.degree_of_flexibility();
 
   // Weights of whole labellings, in the units of the path.
+  // (The final pool's labellings are kept in the candidates.)
   auto labelling_weight = [&](const std::vector<std::size_t>& label, std::size_t kk) {
     double w = 0;
     if(exact)
@@ -374,12 +363,17 @@ Clustering_result cluster_quads(const PolygonMesh& pm, const CGAL_NP_CLASS& np)
     for(std::size_t c = 0; c < kk; ++c) w += stats.initial_group(c).weight;
     return w;
   };
-  const double w1 = labelling_weight(std::vector<std::size_t>(n, 0), 1);
+  internal::Configuration_score score;
+  score.single_cluster_weight = labelling_weight(std::vector<std::size_t>(n, 0), 1);
+  score.flexibility_penalty = lambda;
+  score.initial_dof = d0;
+  score.structure_penalty = mu;
+  score.total_length_deviation = internal::total_length_deviation(pm, vpm);
+  const double w1 = score.single_cluster_weight;
 
-  // 2. Beam of merges; the labellings of the final pool.
-  std::vector<std::vector<std::size_t> > labels;
+  // 2. Beam of merges.
   auto collect = [&](const auto& beam_search, const auto& initial_state) {
-    for(const auto& s : beam_search.run(initial_state, k, d0))
+    for(const auto& s : beam_search.run(initial_state, k))
     {
       std::vector<std::size_t> group_of(big_n);
       for(std::size_t g = 0; g < s.members.size(); ++g)
@@ -387,12 +381,12 @@ Clustering_result cluster_quads(const PolygonMesh& pm, const CGAL_NP_CLASS& np)
       std::vector<std::size_t> label(n);
       for(std::size_t f = 0; f < n; ++f) label[f] = group_of[init.cluster[f]];
       internal::relabel_by_first_face(label);
-      labels.push_back(label);
       Clustering_candidate cand;
+      cand.face_cluster = label;
       cand.weight = s.weight;
       cand.degree_of_flexibility = s.graph.degree_of_flexibility();
-      cand.score = internal::configuration_score(s.weight, w1, lambda,
-                                                 cand.degree_of_flexibility, d0);
+      cand.length_deviation = s.graph.length_deviation();
+      cand.score = score(s.weight, cand.degree_of_flexibility, cand.length_deviation);
       result.candidates.push_back(cand);
     }
   };
@@ -400,14 +394,14 @@ Clustering_result cluster_quads(const PolygonMesh& pm, const CGAL_NP_CLASS& np)
   {
     const internal::Exact_merge_costs costs(affinity, init.cluster, big_n);
     const internal::Beam_search<PolygonMesh, internal::Exact_merge_costs> beam(
-      costs, leaders, policy, w1, lambda, width, auto_merge, verbose);
+      costs, leaders, policy, score, width, auto_merge, verbose);
     collect(beam, beam.initial_state(initial_graph, faces_per_cluster));
   }
   else
   {
     const internal::Descriptor_merge_costs costs(descriptors, init.cluster, big_n);
     const internal::Beam_search<PolygonMesh, internal::Descriptor_merge_costs> beam(
-      costs, leaders, policy, w1, lambda, width, auto_merge, verbose);
+      costs, leaders, policy, score, width, auto_merge, verbose);
     collect(beam, beam.initial_state(initial_graph, faces_per_cluster));
   }
 
@@ -441,14 +435,33 @@ Clustering_result cluster_quads(const PolygonMesh& pm, const CGAL_NP_CLASS& np)
       Clustering_candidate cand;
       cand.origin = Clustering_candidate::KMEANS;
       cand.weight = labelling_weight(label, k);
-      cand.degree_of_flexibility =
-        internal::edge_sharing_graph(pm, fim, label, orientation, k).degree_of_flexibility();
-      cand.score = internal::configuration_score(cand.weight, w1, lambda,
-                                                 cand.degree_of_flexibility, d0);
-      labels.push_back(label);
+      const Edge_sharing_graph<PolygonMesh> graph =
+        internal::edge_sharing_graph(pm, fim, vpm, label, orientation, k);
+      cand.degree_of_flexibility = graph.degree_of_flexibility();
+      cand.length_deviation = graph.length_deviation();
+      cand.score = score(cand.weight, cand.degree_of_flexibility, cand.length_deviation);
+      cand.face_cluster = label;
       result.candidates.push_back(cand);
     }
   }
+
+  // 3b. Clusterings that follow the quad strips, oriented by best match.
+  if(use_strips && k > 1)
+    for(const std::vector<std::size_t>& label :
+          internal::strip_clusterings(pm, fim, vpm, quads, descriptors, k, policy, random))
+    {
+      const internal::Cluster_shapes shapes = internal::cluster_shapes(quads, label, k, policy);
+      const Edge_sharing_graph<PolygonMesh> graph =
+        internal::edge_sharing_graph(pm, fim, vpm, label, shapes.orientation, k);
+      Clustering_candidate cand;
+      cand.origin = Clustering_candidate::QUAD_STRIPS;
+      cand.weight = labelling_weight(label, k);
+      cand.degree_of_flexibility = graph.degree_of_flexibility();
+      cand.length_deviation = graph.length_deviation();
+      cand.score = score(cand.weight, cand.degree_of_flexibility, cand.length_deviation);
+      cand.face_cluster = label;
+      result.candidates.push_back(cand);
+    }
 
   // 4. The lowest score wins.
   for(std::size_t i = 1; i < result.candidates.size(); ++i)
@@ -456,7 +469,8 @@ Clustering_result cluster_quads(const PolygonMesh& pm, const CGAL_NP_CLASS& np)
       result.chosen_candidate = i;
   const Clustering_candidate& chosen = result.candidates[result.chosen_candidate];
   result.choice_reason =
-    std::string(chosen.origin == Clustering_candidate::KMEANS ? "k-means" : "hierarchical") +
+    std::string(chosen.origin == Clustering_candidate::KMEANS ? "k-means"
+                : chosen.origin == Clustering_candidate::QUAD_STRIPS ? "quad-strip" : "hierarchical") +
     " configuration with the lowest score " + std::to_string(chosen.score) + " = weight " +
     std::to_string(chosen.weight) + " / " + std::to_string(w1) + " + " + std::to_string(lambda) +
     " x (" + std::to_string(d0) + " - DOF " + std::to_string(chosen.degree_of_flexibility) +
@@ -464,9 +478,11 @@ Clustering_result cluster_quads(const PolygonMesh& pm, const CGAL_NP_CLASS& np)
     " candidates";
 
   // 5. S-quads, orientations, weights, degree of flexibility.
-  const std::vector<std::size_t>& label = labels[result.chosen_candidate];
-  internal::Cluster_shapes shapes = internal::cluster_shapes(quads, label, k, policy);
+  const std::vector<std::size_t>& label = chosen.face_cluster;
+  internal::Cluster_shapes shapes =
+    internal::finished_clustering(pm, fim, vpm, quads, label, k, policy, relative_threshold * length);
   result.s_quads = shapes.s_quads;
+  result.degree_of_flexibility = shapes.degree_of_flexibility;
   result.cluster_sizes.assign(k, 0);
   result.cluster_weights.assign(k, 0.0);
   for(std::size_t f = 0; f < n; ++f) ++result.cluster_sizes[label[f]];
@@ -483,11 +499,6 @@ Clustering_result cluster_quads(const PolygonMesh& pm, const CGAL_NP_CLASS& np)
       result.cluster_weights[c] *= double(result.cluster_sizes[c] - 1);
   }
   for(double w : result.cluster_weights) result.total_weight += w;
-  shapes.orientation = internal::flexible_orientations(pm, fim, quads, label, shapes.s_quads,
-                                                      shapes.orientation, policy,
-                                                      relative_threshold * length);
-  result.degree_of_flexibility =
-    internal::edge_sharing_graph(pm, fim, label, shapes.orientation, k).degree_of_flexibility();
 
   for(auto f : faces(pm))
   {

@@ -51,18 +51,6 @@ void copy_face_output(const PolygonMesh& pm, OutputMap output, Map map)
     put(output, f, Value(get(map, f)));
 }
 
-// Visitors may have a `phase(name, seconds)` hook (progress reports); the
-// optimization visitors of `optimize_tilable_surface()` need not.
-template <typename Visitor>
-auto notify_phase(Visitor& visitor, const char* name, double seconds, int)
-  -> decltype(visitor.phase(name, seconds), void())
-{
-  visitor.phase(name, seconds);
-}
-
-template <typename Visitor>
-void notify_phase(Visitor&, const char*, double, long) {}
-
 } // namespace internal
 
 /// \ingroup PkgTilableSurfacesRef
@@ -120,7 +108,10 @@ K_set_tilable_result make_k_set_tilable(PolygonMesh& pm, const CGAL_NP_CLASS& np
   result.clustering_time = phase.time();
   internal::notify_phase(visitor, "clustering", result.clustering_time, 0);
 
-  result.optimization = surface.optimize(np);
+  const bool paper_method = choose_parameter(get_parameter(np, internal_np::solver),
+                                            CONSTRAINED_GAUSS_NEWTON) == PAPER_CONJUGATE_GRADIENT;
+  result.optimization = paper_method ? surface.optimize(np) : surface.optimize_closest(np);
+  result.clustering = surface.clustering();
   result.tiles = surface.tile_catalog(result.optimization.measure);
   internal::notify_phase(visitor, "optimization",
                          result.optimization.setup_time + result.optimization.solve_time +

@@ -52,14 +52,37 @@ struct Tilability_measure
   /// Bounding-box diagonal of the input, the length scale of the
   /// approximation error.
   double input_bbox_diagonal = 0;
+  /// Mean edge length of the input, the second unit of the distances below
+  /// (see `in_input_edge_lengths()`).
+  double input_mean_edge_length = 0;
   /// Largest distance from a sample of the result to the input surface,
   /// divided by `input_bbox_diagonal`. Every quad is taken as the fan of 4
   /// triangles around its vertex centroid (no preferred diagonal); the samples
   /// are the vertices and, on each face, the fan's apex, the 4 edge midpoints
-  /// and the centroids of the 4 fan triangles.
+  /// and the centroids of the 4 fan triangles. One-sided: it cannot see a
+  /// part of the input that the result no longer covers.
   double max_approximation_error = 0;
   /// Mean of the same distances over all samples, divided likewise.
   double mean_approximation_error = 0;
+  /// The other direction: largest distance from a sample of the input (the
+  /// same samples, on the input) to the result surface, divided by
+  /// `input_bbox_diagonal`. Large when the result stopped covering part of
+  /// the input.
+  double max_coverage_error = 0;
+  /// Mean of the same distances, divided likewise.
+  double mean_coverage_error = 0;
+  /// The symmetric Hausdorff distance between the result and the input, as
+  /// sampled: the larger of `max_approximation_error` and
+  /// `max_coverage_error` (a fraction of the input's bounding-box diagonal).
+  double hausdorff_distance = 0;
+  /// The mean of the two directions' mean distances, divided likewise.
+  double mean_symmetric_distance = 0;
+  /// `fraction` (of the bounding-box diagonal, as the distances above) in
+  /// mean edge lengths of the input.
+  double in_input_edge_lengths(double fraction) const
+  {
+    return input_mean_edge_length > 0 ? fraction * input_bbox_diagonal / input_mean_edge_length : 0.0;
+  }
   /// Largest distance between a vertex of the result and the same vertex of
   /// the input, in mesh units.
   double max_displacement = 0;
@@ -97,9 +120,16 @@ inline Tilability_measure measure_tilability(const Tilable_problem& problem,
 
   const Eigen::RowVector3d extent = input.colwise().maxCoeff() - input.colwise().minCoeff();
   m.input_bbox_diagonal = extent.norm();
-  const Distance_summary distance = distance_to_input(problem, input, result);
-  m.max_approximation_error = distance.max / m.input_bbox_diagonal;
-  m.mean_approximation_error = distance.mean / m.input_bbox_diagonal;
+  m.input_mean_edge_length = mean_edge_length(problem, input);
+  const double diagonal = m.input_bbox_diagonal > 0 ? m.input_bbox_diagonal : 1.0;
+  const Distance_summary to_input = one_sided_distance(problem, input, result);
+  const Distance_summary from_input = one_sided_distance(problem, result, input);
+  m.max_approximation_error = to_input.max / diagonal;
+  m.mean_approximation_error = to_input.mean / diagonal;
+  m.max_coverage_error = from_input.max / diagonal;
+  m.mean_coverage_error = from_input.mean / diagonal;
+  m.hausdorff_distance = (std::max)(m.max_approximation_error, m.max_coverage_error);
+  m.mean_symmetric_distance = 0.5 * (m.mean_approximation_error + m.mean_coverage_error);
 
   const Eigen::VectorXd displacement = (result - input).rowwise().norm();
   m.max_displacement = displacement.maxCoeff();

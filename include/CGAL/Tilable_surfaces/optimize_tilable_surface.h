@@ -11,8 +11,10 @@
 #include <CGAL/Tilable_surfaces/exceptions.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/Solver_settings.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/Tilable_problem.h>
+#include <CGAL/Tilable_surfaces/internal/Optimization/closeness_objective.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/conjugate_gradient.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/constrained_gauss_newton.h>
+#include <CGAL/Tilable_surfaces/internal/Optimization/displacement_estimate.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/fairness_operator.h>
 #include <CGAL/Tilable_surfaces/measure.h>
 #include <CGAL/Tilable_surfaces/named_parameters.h>
@@ -98,6 +100,16 @@ struct Optimization_result
   Tilability_measure measure;
 };
 
+/// \ingroup PkgTilableSurfacesRef
+/// The default of `fairness_weight` (mu2) for `solver`: for the default
+/// solver the weight of the as-rigid-as-possible energy of the displacement
+/// relative to `distance_weight` 1e-4; for the paper's conjugate gradient the
+/// paper's weight of its fairness term F_f.
+inline double default_fairness_weight(Solver_type solver)
+{
+  return solver == CONSTRAINED_GAUSS_NEWTON ? 1e-6 : 1e-4;
+}
+
 namespace internal {
 
 inline void check_parameter(bool ok, const std::string& what)
@@ -105,6 +117,79 @@ inline void check_parameter(bool ok, const std::string& what)
   if(!ok)
     throw Invalid_input("invalid parameter: " + what, Invalid_input::PARAMETER);
 }
+
+// Everything a solve needs, read from the mesh and the named parameters and
+// checked: the problem, the solver settings, the fixed vertices, the
+// normalized input X0 (centre of the bounding box at the origin, unit
+// diagonal), the fairness operator and the closeness metric.
+struct Optimization_setup
+{
+  Tilable_problem problem;
+  Solver_type solver = CONSTRAINED_GAUSS_NEWTON;
+  Solver_settings settings;
+  std::vector<bool> fixed;
+  Eigen::RowVector3d centre;
+  double scale = 1;
+  Point_matrix X0;
+  Eigen::SparseMatrix<double> D;
+  std::vector<Eigen::Matrix3d> metric;
+
+  template <typename PolygonMesh, typename NamedParameters>
+  Optimization_setup(const PolygonMesh& pm, const NamedParameters& np)
+  {
+    using parameters::choose_parameter;
+    using parameters::get_parameter;
+    namespace TS_np = CGAL::Tilable_surfaces::internal_np;
+    typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
+
+    validate_quad_mesh(pm, np);
+    problem = make_tilable_problem(pm, np);
+    solver = choose_parameter(get_parameter(np, TS_np::solver), CONSTRAINED_GAUSS_NEWTON);
+    const bool gauss_newton = (solver == CONSTRAINED_GAUSS_NEWTON);
+    settings.weights.distance = choose_parameter(get_parameter(np, TS_np::distance_weight), 1e-4);
+    settings.weights.fairness = choose_parameter(get_parameter(np, TS_np::fairness_weight),
+                                                 default_fairness_weight(solver));
+    const double tangential = choose_parameter(get_parameter(np, TS_np::tangential_weight), 0.1);
+    settings.weights.edge_length = choose_parameter(get_parameter(np, TS_np::edge_length_weight), 1.0);
+    settings.weights.diagonal = choose_parameter(get_parameter(np, TS_np::diagonal_weight), 1.0);
+    settings.weights.volume = choose_parameter(get_parameter(np, TS_np::volume_weight), 1.0);
+    settings.congruence_tolerance = choose_parameter(get_parameter(np, TS_np::congruence_tolerance), 1e-6);
+    settings.convergence_tolerance =
+      choose_parameter(get_parameter(np, TS_np::convergence_tolerance), gauss_newton ? 1e-9 : 1e-12);
+    settings.max_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
+                                               gauss_newton ? 300 : 5000);
+
+    check_parameter(solver == CONSTRAINED_GAUSS_NEWTON || solver == PAPER_CONJUGATE_GRADIENT,
+                    "unknown solver");
+    const Energy_terms& w = settings.weights;
+    for(double mu : {w.distance, w.fairness, w.edge_length, w.diagonal, w.volume})
+      check_parameter(std::isfinite(mu) && mu >= 0, "the weights must be finite and >= 0");
+    check_parameter(!gauss_newton || w.distance > 0,
+                    "distance_weight must be > 0 for the constrained solver");
+    check_parameter(settings.congruence_tolerance > 0 && settings.convergence_tolerance >= 0,
+                    "the tolerances must be > 0");
+    check_parameter(settings.max_iterations >= 0, "number_of_iterations must be >= 0");
+    check_parameter(tangential > 0 && tangential <= 1, "tangential_weight must be in (0, 1]");
+
+    const auto vim = CGAL::get_initialized_vertex_index_map(pm, np);
+    const auto vcm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_is_constrained),
+                                      CGAL::Static_boolean_property_map<vertex_descriptor, false>());
+    fixed.assign(problem.number_of_vertices(), false);
+    for(vertex_descriptor v : vertices(pm))
+      fixed[get(vim, v)] = get(vcm, v);
+
+    const Eigen::RowVector3d lo = problem.points.colwise().minCoeff();
+    const Eigen::RowVector3d hi = problem.points.colwise().maxCoeff();
+    centre = 0.5 * (lo + hi);
+    scale = (hi - lo).norm();
+    X0 = (problem.points.rowwise() - centre) / scale;
+    const std::vector<bool> features = feature_vertices(pm, problem.points, np);
+    D = fairness_operator(pm, vim, features);
+    metric = closeness_metrics(pm, vim, problem.points, features, tangential);
+  }
+
+  Solver_input input() const { return Solver_input{problem, D, X0, fixed, metric}; }
+};
 
 } // namespace internal
 
@@ -175,61 +260,25 @@ Optimization_result optimize_tilable_surface(PolygonMesh& pm, const CGAL_NP_CLAS
   Optimization_result result;
   CGAL::Real_timer timer;
   timer.start();
-
-  validate_quad_mesh(pm, np);
-  const internal::Tilable_problem problem = internal::make_tilable_problem(pm, np);
-
-  const Solver_type solver = choose_parameter(get_parameter(np, TS_np::solver), CONSTRAINED_GAUSS_NEWTON);
-  const bool gauss_newton = (solver == CONSTRAINED_GAUSS_NEWTON);
-  internal::Solver_settings settings;
-  settings.weights.distance = choose_parameter(get_parameter(np, TS_np::distance_weight), 1e-4);
-  settings.weights.fairness = choose_parameter(get_parameter(np, TS_np::fairness_weight), 1e-4);
-  settings.weights.edge_length = choose_parameter(get_parameter(np, TS_np::edge_length_weight), 1.0);
-  settings.weights.diagonal = choose_parameter(get_parameter(np, TS_np::diagonal_weight), 1.0);
-  settings.weights.volume = choose_parameter(get_parameter(np, TS_np::volume_weight), 1.0);
-  settings.congruence_tolerance = choose_parameter(get_parameter(np, TS_np::congruence_tolerance), 1e-6);
-  settings.convergence_tolerance =
-    choose_parameter(get_parameter(np, TS_np::convergence_tolerance), gauss_newton ? 1e-9 : 1e-12);
-  settings.max_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
-                                             gauss_newton ? 300 : 5000);
-
-  internal::check_parameter(solver == CONSTRAINED_GAUSS_NEWTON || solver == PAPER_CONJUGATE_GRADIENT,
-                            "unknown solver");
-  const Energy_terms& w = settings.weights;
-  for(double mu : {w.distance, w.fairness, w.edge_length, w.diagonal, w.volume})
-    internal::check_parameter(std::isfinite(mu) && mu >= 0, "the weights must be finite and >= 0");
-  internal::check_parameter(!gauss_newton || w.distance > 0,
-                            "distance_weight must be > 0 for the constrained solver");
-  internal::check_parameter(settings.congruence_tolerance > 0 && settings.convergence_tolerance >= 0,
-                            "the tolerances must be > 0");
-  internal::check_parameter(settings.max_iterations >= 0, "number_of_iterations must be >= 0");
-
+  const internal::Optimization_setup setup(pm, np);
+  const internal::Tilable_problem& problem = setup.problem;
+  const internal::Solver_settings& settings = setup.settings;
+  const internal::Point_matrix& X0 = setup.X0;
+  const std::vector<bool>& fixed = setup.fixed;
+  const double scale = setup.scale;
   const auto vim = CGAL::get_initialized_vertex_index_map(pm, np);
-  const auto vcm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_is_constrained),
-                                    CGAL::Static_boolean_property_map<vertex_descriptor, false>());
-  std::vector<bool> fixed(problem.number_of_vertices(), false);
-  for(vertex_descriptor v : vertices(pm))
-    fixed[get(vim, v)] = get(vcm, v);
-
-  // Similarity normalization: centre of the bounding box, unit diagonal.
-  const Eigen::RowVector3d lo = problem.points.colwise().minCoeff();
-  const Eigen::RowVector3d hi = problem.points.colwise().maxCoeff();
-  const Eigen::RowVector3d centre = 0.5 * (lo + hi);
-  const double scale = (hi - lo).norm();
-  const internal::Point_matrix X0 = (problem.points.rowwise() - centre) / scale;
-  const Eigen::SparseMatrix<double> D = internal::fairness_operator(pm, problem.points, np);
-  const internal::Solver_input input{problem, D, X0, fixed};
   result.setup_time = timer.time();
 
   timer.reset();
   Visitor visitor = choose_parameter<Visitor>(get_parameter(np, CGAL::internal_np::visitor));
   internal::Point_matrix X;
   const internal::Solver_report report =
-    gauss_newton ? internal::constrained_gauss_newton(input, settings, X, visitor)
-                 : internal::polak_ribiere(input, settings, X, visitor);
+    setup.solver == CONSTRAINED_GAUSS_NEWTON
+      ? internal::constrained_gauss_newton(setup.input(), settings, X, visitor)
+      : internal::polak_ribiere(setup.input(), settings, X, visitor);
   result.iterations = report.iterations;
   result.objective = report.objective;
-  result.energy = internal::paper_energy(problem, D, X, X0);
+  result.energy = internal::paper_energy(problem, setup.D, X, X0);
 
   VertexPointMap vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                         get_property_map(CGAL::vertex_point, pm));
@@ -246,10 +295,50 @@ Optimization_result optimize_tilable_surface(PolygonMesh& pm, const CGAL_NP_CLAS
   result.solve_time = timer.time();
 
   timer.reset();
-  result.measure = internal::measure_tilability(problem, D, problem.points, moved);
+  result.measure = internal::measure_tilability(problem, setup.D, problem.points, moved);
   result.converged = result.measure.congruence_error <= settings.congruence_tolerance;
   result.measure_time = timer.time();
   return result;
+}
+
+/// \ingroup PkgTilableSurfacesRef
+/// How far a clustering is predicted to move the surface (see
+/// `predict_displacement()`), as fractions of the input's bounding-box
+/// diagonal.
+struct Displacement_prediction
+{
+  /// The largest predicted move of a vertex off the input surface, measured
+  /// in the default solver's closeness metric (a move along the input's
+  /// normal counts fully, a slide in it by `tangential_weight`).
+  double max = 0;
+  /// The root mean square of the same moves over the vertices.
+  double rms = 0;
+  /// The largest predicted move of a vertex, in plain distance.
+  double max_euclidean = 0;
+};
+
+/// \ingroup PkgTilableSurfacesRef
+/// Predicts how far the default solver of `optimize_tilable_surface()` will
+/// move `pm` to make it tilable by the clustering in `np`, without moving
+/// it: the least-norm linearized step from the input, the smallest move (in
+/// the solver's metric) that meets the congruence constraints linearized at
+/// the input. It is the solver's first step before any line search, and costs one
+/// sparse factorization: use it to compare clusterings by what they cost
+/// rather than by their shapes.
+///
+/// Takes the named parameters of `optimize_tilable_surface()` (the two maps
+/// are required) and throws as it does.
+template <class PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
+Displacement_prediction predict_displacement(const PolygonMesh& pm, const CGAL_NP_CLASS& np)
+{
+  const internal::Optimization_setup setup(pm, np);
+  const internal::Displacement_estimate e =
+    internal::linearized_displacement(setup.input(), setup.settings);
+  Displacement_prediction p;
+  p.max = e.max;
+  p.rms = e.rms;
+  p.max_euclidean = e.step.rowwise().norm().maxCoeff();
+  return p;
 }
 
 } // namespace Tilable_surfaces

@@ -28,8 +28,9 @@ inline nlohmann::json energy_terms_json(const Energy_terms& t)
 /// \ingroup PkgTilableSurfacesRef
 /// The report of a run as JSON: K, degree of flexibility, cluster sizes,
 /// congruence error (worst and per cluster, relative to the mean edge length,
-/// and the tolerance it was held to), approximation error to the input
-/// (max and mean, relative to the input's bounding-box diagonal),
+/// and the tolerance it was held to), the distances between the result and
+/// the input both ways and the symmetric Hausdorff distance (max and mean,
+/// relative to the input's bounding-box diagonal and in its mean edge lengths),
 /// displacement (mesh units), the paper's normalized terms, solver
 /// iterations, whether the result is tilable, the clustering's choice, and
 /// the time of each phase in seconds. Callers add what only they know
@@ -48,11 +49,16 @@ inline nlohmann::json tilability_report_json(const K_set_tilable_result& r,
       {"tolerance", congruence_tolerance},
       {"length_scale", "mean edge length"},
       {"mean_edge_length", m.mean_edge_length}}},
-    {"approximation_error",
-     {{"max", m.max_approximation_error},
-      {"mean", m.mean_approximation_error},
+    {"fidelity",
+     {{"hausdorff", {{"max", m.hausdorff_distance}, {"mean", m.mean_symmetric_distance}}},
+      {"result_to_input", {{"max", m.max_approximation_error}, {"mean", m.mean_approximation_error}}},
+      {"input_to_result", {{"max", m.max_coverage_error}, {"mean", m.mean_coverage_error}}},
+      {"hausdorff_in_edge_lengths",
+       {{"max", m.in_input_edge_lengths(m.hausdorff_distance)},
+        {"mean", m.in_input_edge_lengths(m.mean_symmetric_distance)}}},
       {"length_scale", "input bounding-box diagonal"},
-      {"input_bbox_diagonal", m.input_bbox_diagonal}}},
+      {"input_bbox_diagonal", m.input_bbox_diagonal},
+      {"input_mean_edge_length", m.input_mean_edge_length}}},
     {"displacement", {{"max", m.max_displacement}, {"mean", m.mean_displacement}}},
     {"normalized_terms", energy_terms_json(m.normalized_terms)},
     {"tilable", r.is_tilable()},

@@ -19,15 +19,19 @@
 // flexibility). With auto-merge, the pairs of groups whose S-quad edges lie
 // in the same 4 components of the edge-sharing graph (merging them keeps the
 // degree of flexibility) are proposed too. Every proposal is scored
-//   score = W' / W1 + lambda * (D0 - D') / D0,
+//   score = W' / W1 + lambda * (D0 - D') / D0 + mu * V' / V1,
 // W' the configuration's weight after the merge, W1 the weight of the
 // single-cluster configuration, D' its degree of flexibility (from a tiny
-// union-find over the components the merge joins) and D0 the degree of
-// flexibility of the initial clustering. The `width` best distinct proposals
-// form the beam for k - 1 groups.
+// union-find over the components the merge joins), D0 the degree of
+// flexibility of the initial clustering, V' the spread of the input's edge
+// lengths within the components after the merge
+// (Edge_sharing_graph::length_deviation_after_merge()) and V1 that of all the
+// edges. V sees what shape alone does not: two quads of the same shape in
+// different rings of a tube tie the lengths of both rings together. The
+// `width` best distinct proposals form the beam for k - 1 groups.
 //
-// Since a merge never raises the DOF, W' / W1 + lambda (D0 - D) / D0, D the
-// DOF before the merge, bounds a proposal's score from below. A proposal whose
+// Since a merge never raises the DOF nor lowers V, the score with the DOF
+// and V before the merge bounds a proposal's score from below. A proposal whose
 // bound exceeds the worst of the `width` best distinct proposals found so far
 // cannot enter the next beam and is not evaluated further; pairs are visited
 // by increasing cost, so the rest of them is skipped too.
@@ -62,14 +66,27 @@ inline std::uint64_t mix64(std::uint64_t x)
   return x ^ (x >> 31);
 }
 
-// The score of a configuration of weight w and degree of flexibility d:
-// w / w1 + lambda (d0 - d) / d0 (see the file comment).
-inline double configuration_score(double w, double w1, double lambda, std::size_t d,
-                                  std::size_t d0)
+// The score of a configuration of weight w, degree of flexibility d and
+// length deviation v (Edge_sharing_graph::length_deviation()):
+//   w / w1 + lambda (d0 - d) / d0 + mu v / v1,
+// with w1 the single-cluster weight, d0 the initial DOF and v1 the deviation
+// of all edge lengths from their mean (see the file comment).
+struct Configuration_score
 {
-  return w / (w1 > 0 ? w1 : 1.0) +
-         lambda * (double(d0) - double(d)) / double((std::max)(d0, std::size_t(1)));
-}
+  double single_cluster_weight = 1, flexibility_penalty = 0;
+  std::size_t initial_dof = 1;
+  double structure_penalty = 0, total_length_deviation = 1;
+
+  double operator()(double w, std::size_t d, double v) const
+  {
+    const double w1 = single_cluster_weight > 0 ? single_cluster_weight : 1.0;
+    const double v1 = total_length_deviation > 0 ? total_length_deviation : 1.0;
+    return w / w1 +
+           flexibility_penalty * (double(initial_dof) - double(d)) /
+             double((std::max)(initial_dof, std::size_t(1))) +
+           structure_penalty * v / v1;
+  }
+};
 
 template <typename PolygonMesh, typename MergeCosts>
 struct Beam_state
@@ -98,11 +115,10 @@ public:
 
   // `leaders[c]` is the quad labelling initial cluster c's S-quad.
   Beam_search(const MergeCosts& costs, const std::vector<Quad>& leaders,
-              Orientation_policy policy, double single_cluster_weight,
-              double flexibility_penalty, std::size_t width, bool auto_merge, bool verbose)
+              Orientation_policy policy, const Configuration_score& score,
+              std::size_t width, bool auto_merge, bool verbose)
     : m_costs(costs), m_leaders(leaders), m_policy(policy)
-    , m_w1(single_cluster_weight)
-    , m_lambda(flexibility_penalty), m_width((std::max)(width, std::size_t(1)))
+    , m_score(score), m_width((std::max)(width, std::size_t(1)))
     , m_auto_merge(auto_merge), m_verbose(verbose)
   {}
 
@@ -132,7 +148,7 @@ public:
   }
 
   // Merges down to `k` groups; returns the final beam, best score first.
-  std::vector<State> run(State initial, std::size_t k, std::size_t initial_dof) const
+  std::vector<State> run(State initial, std::size_t k) const
   {
     std::vector<State> beam;
     beam.push_back(std::move(initial));
@@ -141,7 +157,7 @@ public:
       std::vector<Proposal> proposals;
       Score_bound bound(m_width);
       for(std::size_t b = 0; b < beam.size(); ++b)
-        propose(beam[b], b, initial_dof, bound, proposals);
+        propose(beam[b], b, bound, proposals);
       std::sort(proposals.begin(), proposals.end());
       std::vector<Proposal> chosen;
       std::unordered_set<std::uint64_t> seen;
@@ -294,14 +310,13 @@ private:
   }
 
   // The lowest score a merge of cost `cost` can get from `s` (see the file comment).
-  double score_lower_bound(const State& s, double cost, std::size_t initial_dof) const
+  double score_lower_bound(const State& s, double cost) const
   {
-    return configuration_score(s.weight + cost, m_w1, m_lambda,
-                               s.graph.degree_of_flexibility(), initial_dof);
+    return m_score(s.weight + cost, s.graph.degree_of_flexibility(), s.graph.length_deviation());
   }
 
   void add_proposal(const State& s, std::size_t parent, std::size_t a, std::size_t b,
-                    double cost, std::size_t initial_dof, Score_bound& bound,
+                    double cost, Score_bound& bound,
                     std::vector<Proposal>& out) const
   {
     const bool a_kept = s.faces[a] > s.faces[b] || (s.faces[a] == s.faces[b] && a < b);
@@ -313,14 +328,17 @@ private:
     p.cost = cost;
     const std::size_t dof = s.graph.degree_of_flexibility() -
                             joined_components(s, p.kept, p.removed, p.correspondence);
-    p.score = configuration_score(s.weight + p.cost, m_w1, m_lambda, dof, initial_dof);
+    p.score = m_score(s.weight + p.cost, dof,
+                      m_score.structure_penalty > 0
+                        ? s.graph.length_deviation_after_merge(p.kept, p.removed, p.correspondence)
+                        : 0.0);
     p.hash = s.hash - mix64(s.key[a]) - mix64(s.key[b]) + mix64(s.key[a] + s.key[b]);
     bound.add(p.score, p.hash);
     out.push_back(p);
   }
 
-  void propose(const State& s, std::size_t parent, std::size_t initial_dof,
-               Score_bound& bound, std::vector<Proposal>& out) const
+  void propose(const State& s, std::size_t parent, Score_bound& bound,
+               std::vector<Proposal>& out) const
   {
     std::vector<std::pair<double, std::pair<std::size_t, std::size_t> > > cheapest;
     if(s.alive <= exhaustive_limit())
@@ -345,23 +363,22 @@ private:
     }
     // Only pairs that can still enter the beam are sorted.
     cheapest.erase(std::remove_if(cheapest.begin(), cheapest.end(), [&](const auto& c) {
-                     return score_lower_bound(s, c.first, initial_dof) > bound.value();
+                     return score_lower_bound(s, c.first) > bound.value();
                    }), cheapest.end());
     std::sort(cheapest.begin(), cheapest.end());
     std::vector<std::pair<std::size_t, std::size_t> > pairs;
     for(const auto& c : cheapest)
     {
-      if(score_lower_bound(s, c.first, initial_dof) > bound.value())
+      if(score_lower_bound(s, c.first) > bound.value())
         break;
       pairs.push_back(c.second);
     }
     prefetch_correspondences(pairs);
     for(std::size_t i = 0; i < pairs.size(); ++i)
     {
-      if(score_lower_bound(s, cheapest[i].first, initial_dof) > bound.value())
+      if(score_lower_bound(s, cheapest[i].first) > bound.value())
         break;
-      add_proposal(s, parent, pairs[i].first, pairs[i].second, cheapest[i].first,
-                   initial_dof, bound, out);
+      add_proposal(s, parent, pairs[i].first, pairs[i].second, cheapest[i].first, bound, out);
     }
     if(!m_auto_merge)
       return;
@@ -384,7 +401,7 @@ private:
       // A pair proposed above again has the same hash: the beam keeps one.
       const std::size_t a = patterns[i].second, b = patterns[i + 1].second;
       const double c = cost(s, a, b);
-      if(score_lower_bound(s, c, initial_dof) > bound.value())
+      if(score_lower_bound(s, c) > bound.value())
         continue;
       const Quad_orientation corr = correspondence(a, b);
       bool identical = true;
@@ -392,7 +409,7 @@ private:
         identical = identical &&
                     s.graph.component(a, k) == s.graph.component(b, corr.face_edge(k));
       if(identical)
-        add_proposal(s, parent, a, b, c, initial_dof, bound, out);
+        add_proposal(s, parent, a, b, c, bound, out);
     }
   }
 
@@ -443,7 +460,7 @@ private:
   const MergeCosts& m_costs;
   const std::vector<Quad>& m_leaders;
   Orientation_policy m_policy;
-  double m_w1, m_lambda;
+  Configuration_score m_score;
   std::size_t m_width;
   bool m_auto_merge, m_verbose;
   mutable std::unordered_map<std::uint64_t, Quad_orientation> m_correspondences;

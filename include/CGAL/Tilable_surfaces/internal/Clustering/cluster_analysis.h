@@ -39,6 +39,7 @@ struct Cluster_shapes
   std::vector<Quad> s_quads;                   // per cluster
   std::vector<Quad_orientation> orientation;   // per face
   std::vector<double> distance;                // per face: s(S-quad, face)
+  std::size_t degree_of_flexibility = 0;       // when known (finished_clustering())
 };
 
 // S-quads by Procrustes averaging, then each face tagged with its best match.
@@ -108,16 +109,35 @@ inline std::vector<bool> split_in_two(const std::vector<Quad>& quads,
 
 // The edge-sharing graph of a labelling given as per-face vectors indexed by
 // `fim`.
-template <typename PolygonMesh, typename FaceIndexMap>
+template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
 Edge_sharing_graph<PolygonMesh>
-edge_sharing_graph(const PolygonMesh& pm, FaceIndexMap fim, const std::vector<std::size_t>& label,
+edge_sharing_graph(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
+                   const std::vector<std::size_t>& label,
                    const std::vector<Quad_orientation>& orientation, std::size_t k)
 {
   std::vector<int> o(orientation.size());
   for(std::size_t f = 0; f < o.size(); ++f) o[f] = orientation[f].index();
   return Edge_sharing_graph<PolygonMesh>(
     pm, k, boost::make_iterator_property_map(label.begin(), fim),
-    boost::make_iterator_property_map(o.begin(), fim), CGAL::parameters::face_index_map(fim));
+    boost::make_iterator_property_map(o.begin(), fim),
+    CGAL::parameters::face_index_map(fim).vertex_point_map(vpm));
+}
+
+// The squared deviations of all the edge lengths of `pm` from their mean:
+// Edge_sharing_graph::length_deviation() with every edge in one component.
+template <typename PolygonMesh, typename VertexPointMap>
+double total_length_deviation(const PolygonMesh& pm, VertexPointMap vpm)
+{
+  double count = 0, sum = 0, sum_of_squares = 0;
+  for(auto e : edges(pm))
+  {
+    const double l = CGAL::to_double(CGAL::approximate_sqrt(
+      CGAL::squared_distance(get(vpm, source(e, pm)), get(vpm, target(e, pm)))));
+    count += 1;
+    sum += l;
+    sum_of_squares += l * l;
+  }
+  return count > 0 ? (std::max)(sum_of_squares - sum * sum / count, 0.0) : 0.0;
 }
 
 } // namespace internal

@@ -4,13 +4,14 @@
 #ifndef CGAL_TILABLE_SURFACES_INTERNAL_MEASURE_APPROXIMATION_H
 #define CGAL_TILABLE_SURFACES_INTERNAL_MEASURE_APPROXIMATION_H
 
-// Distance from a result surface to the input surface (method notes §4), with
-// CGAL's AABB tree. A quad is the fan of 4 triangles around its vertex
+// Distances between two surfaces with the same faces (the input and a result),
+// with CGAL's AABB tree. A quad is the fan of 4 triangles around its vertex
 // centroid: no diagonal is preferred, and the centroid lies on the bilinear
-// patch of the quad. The result, as the same kind of surface, is sampled at
-// its vertices and, on each face, at the apex of the fan, the midpoints of
-// the 4 edges and the centroids of the 4 fan triangles; so a surface
-// measured against itself is at distance 0.
+// patch of the quad. The sampled surface is the same kind of surface, sampled
+// at its vertices and, on each face, at the apex of the fan, the midpoints of
+// the 4 edges and the centroids of the 4 fan triangles; so a surface measured
+// against itself is at distance 0. Both directions are needed: samples of the
+// result near the input say nothing of parts of the input the result left.
 
 #include <CGAL/Tilable_surfaces/internal/Optimization/Tilable_problem.h>
 
@@ -32,10 +33,11 @@ struct Distance_summary
   double max = 0, mean = 0;
 };
 
-// Max and mean distance of the samples of `result` to `input` (both with the
-// faces of `problem`), in the units of the points.
-inline Distance_summary distance_to_input(const Tilable_problem& problem, const Point_matrix& input,
-                                          const Point_matrix& result)
+// Max and mean distance of the samples of `sampled` to the surface
+// `reference` (both with the faces of `problem`), in the units of the points.
+inline Distance_summary one_sided_distance(const Tilable_problem& problem,
+                                           const Point_matrix& reference,
+                                           const Point_matrix& sampled)
 {
   typedef CGAL::Simple_cartesian<double> K;
   typedef std::vector<K::Triangle_3>::const_iterator Iterator;
@@ -46,7 +48,7 @@ inline Distance_summary distance_to_input(const Tilable_problem& problem, const 
   std::vector<K::Triangle_3> triangles;
   for(std::size_t f = 0; f < problem.face_corners.size(); ++f)
   {
-    const Quad q = instance(problem, input, f);
+    const Quad q = instance(problem, reference, f);
     const K::Point_3 centre = point((q[0] + q[1] + q[2] + q[3]) / 4.0);
     for(int i = 0; i < 4; ++i)
       triangles.emplace_back(point(q[i]), point(q[(i + 1) & 3]), centre);
@@ -62,11 +64,11 @@ inline Distance_summary distance_to_input(const Tilable_problem& problem, const 
     s.mean += d;
     ++count;
   };
-  for(Eigen::Index v = 0; v < result.rows(); ++v)
-    sample(result.row(v).transpose());
+  for(Eigen::Index v = 0; v < sampled.rows(); ++v)
+    sample(sampled.row(v).transpose());
   for(std::size_t f = 0; f < problem.face_corners.size(); ++f)
   {
-    const Quad q = instance(problem, result, f);
+    const Quad q = instance(problem, sampled, f);
     const Eigen::Vector3d centre = (q[0] + q[1] + q[2] + q[3]) / 4.0;
     sample(centre);
     for(int i = 0; i < 4; ++i)

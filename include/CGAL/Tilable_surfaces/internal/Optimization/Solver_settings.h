@@ -10,6 +10,7 @@
 #include <CGAL/Tilable_surfaces/internal/Optimization/Tilable_problem.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/energy_terms.h>
 
+#include <Eigen/Core>
 #include <Eigen/Sparse>
 
 #include <vector>
@@ -33,6 +34,7 @@ struct Solver_input
   const Eigen::SparseMatrix<double>& D; // fairness operator
   const Point_matrix& X0;               // normalized input positions
   const std::vector<bool>& fixed;       // vertices that must not move
+  const std::vector<Eigen::Matrix3d>& metric; // closeness metric per vertex (closeness_objective.h)
 };
 
 struct Solver_report

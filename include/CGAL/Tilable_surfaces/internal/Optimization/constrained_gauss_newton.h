@@ -53,6 +53,7 @@
 
 #include <CGAL/Tilable_surfaces/internal/Measure/congruence.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/Solver_settings.h>
+#include <CGAL/Tilable_surfaces/internal/Optimization/closeness_objective.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/congruence_constraints.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/sparse_solver.h>
 
@@ -65,26 +66,30 @@ namespace CGAL {
 namespace Tilable_surfaces {
 namespace internal {
 
-// H / mu1 = I + (mu2 / mu1) D^T D on the free unknowns.
-inline Eigen::SparseMatrix<double> displacement_metric(const Solver_input& in, const Solver_settings& settings,
-                                                       const std::vector<int>& variable, int n)
+// b relative to H's unit diagonal; constraint rows are O(1) per unit move.
+constexpr double kkt_regularization() { return 1e6; }
+
+// The step of the quadratic model with gradient `gradient` subject to
+// J step = -`target`, by the method of multipliers on the regularized KKT
+// system H + b J^T J factorized in `solver`: each pass is one
+// back-substitution. `multipliers` is the starting guess and receives the new
+// multipliers. Passes stop once the linearized residual is below
+// `eta` |target|.
+inline Eigen::VectorXd multiplier_step(const SPD_solver& solver, const Eigen::SparseMatrix<double>& J,
+                                       double b, const Eigen::VectorXd& gradient,
+                                       const Eigen::VectorXd& target, Eigen::VectorXd& multipliers,
+                                       double eta)
 {
-  typedef Eigen::SparseMatrix<double> Matrix;
-  const Matrix L = Matrix(in.D.transpose() * in.D);
-  const double ratio = settings.weights.fairness / settings.weights.distance;
-  std::vector<Eigen::Triplet<double>> t;
-  for(int v = 0; v < int(variable.size()); ++v)
-    if(variable[v] >= 0)
-      for(int d = 0; d < 3; ++d)
-        t.emplace_back(variable[v] + d, variable[v] + d, 1.0);
-  for(int k = 0; k < L.outerSize(); ++k)
-    for(Matrix::InnerIterator it(L, k); it; ++it)
-      if(variable[it.row()] >= 0 && variable[it.col()] >= 0)
-        for(int d = 0; d < 3; ++d)
-          t.emplace_back(variable[it.row()] + d, variable[it.col()] + d, ratio * it.value());
-  Matrix H(n, n);
-  H.setFromTriplets(t.begin(), t.end());
-  return H;
+  Eigen::VectorXd step;
+  for(int pass = 0; pass < 20; ++pass)
+  {
+    step = solver.solve(-(gradient + J.transpose() * (multipliers + b * target)));
+    const Eigen::VectorXd linear_residual = target + J * step;
+    multipliers += b * linear_residual;
+    if(linear_residual.norm() <= eta * target.norm())
+      break;
+  }
+  return step;
 }
 
 // The phase-1 variants, in the order they are tried. The cautious one halves
@@ -109,9 +114,10 @@ Solver_report constrained_gauss_newton_attempt(const Solver_input& in, const Sol
   const double ell = mean_edge_length(in.problem, in.X0);
   const double tolerance = settings.congruence_tolerance;
   const Congruence_constraints constraints(in.problem, ell);
-  const Matrix H = displacement_metric(in, settings, variable, n);
-  // b relative to H's unit diagonal; constraint rows are O(1) per unit move.
-  const double b = 1e6;
+  const Closeness_objective objective(in.problem, in.X0, in.metric,
+                                      settings.weights.fairness / settings.weights.distance, variable, n);
+  const Matrix& H = objective.hessian();
+  const double b = kkt_regularization();
   const int measure_period = 10;
 
   auto positions = [&](const Eigen::VectorXd& d) {
@@ -147,7 +153,7 @@ Solver_report constrained_gauss_newton_attempt(const Solver_input& in, const Sol
   auto record = [&]() {
     ++it;
     report.iterations = it;
-    report.objective = settings.weights.distance * d.dot(H * d);
+    report.objective = settings.weights.distance * objective.value(X);
     const double residual = c.cwiseAbs().maxCoeff() / ell;
     measured = residual <= tolerance || it % measure_period == 0;
     report.congruence_error = measured ? congruence_error(in.problem, X) : residual;
@@ -156,23 +162,9 @@ Solver_report constrained_gauss_newton_attempt(const Solver_input& in, const Sol
   };
   auto congruent = [&]() { return measured && report.congruence_error <= tolerance; };
 
-  // The step of the quadratic model with gradient `gradient` subject to
-  // J step = -`target`, by the method of multipliers on the regularized KKT
-  // system factorized in `solver`: each pass is one back-substitution.
-  // `multipliers` is the starting guess and receives the new multipliers.
-  // Passes stop once the linearized residual is below `eta` |target|.
   auto kkt_step = [&](const Eigen::VectorXd& gradient, const Eigen::VectorXd& target,
                       Eigen::VectorXd& multipliers, double eta) {
-    Eigen::VectorXd step;
-    for(int pass = 0; pass < 20; ++pass)
-    {
-      step = solver.solve(-(gradient + J.transpose() * (multipliers + b * target)));
-      const Eigen::VectorXd linear_residual = target + J * step;
-      multipliers += b * linear_residual;
-      if(linear_residual.norm() <= eta * target.norm())
-        break;
-    }
-    return step;
+    return multiplier_step(solver, J, b, gradient, target, multipliers, eta);
   };
 
   // Phase 1: SQP steps, with the exact Lagrangian Hessian
@@ -185,7 +177,7 @@ Solver_report constrained_gauss_newton_attempt(const Solver_input& in, const Sol
   while(it < settings.max_iterations)
   {
     constraints.evaluate(X, variable, n, c, &J);
-    const Eigen::VectorXd Hd = H * d;
+    const Eigen::VectorXd Hd = objective.gradient(X);
     Matrix K = H + b * Matrix(J.transpose() * J);
     if(exact_hessian)
       K += constraints.lagrangian_hessian(X, variable, n, lambda);
@@ -215,16 +207,14 @@ Solver_report constrained_gauss_newton_attempt(const Solver_input& in, const Sol
     const double eta = exact_hessian ? (std::min)(1e-3, residual) : 1e-3;
     Eigen::VectorXd lambda_trial = exact_hessian ? lambda : Eigen::VectorXd::Zero(c.size());
     delta = kkt_step(Hd, c, lambda_trial, eta);
-    // Line search on the l2 merit 1/2 d^T H d + nu |c|, nu above |lambda|.
+    // Line search on the l2 merit f + nu |c|, nu above |lambda|.
     nu = (std::max)(nu, 2 * lambda_trial.norm());
-    auto merit = [&](const Eigen::VectorXd& dd, const Eigen::VectorXd& cc) {
-      return 0.5 * dd.dot(H * dd) + nu * cc.norm();
-    };
-    const double merit_now = merit(d, c);
+    const double merit_now = objective.value(X) + nu * c.norm();
     const double slope = (std::min)(delta.dot(Hd) - nu * c.norm(), 0.0);
     auto acceptable = [&](const Eigen::VectorXd& dd, double alpha) {
-      constraints.evaluate(positions(dd), variable, n, c_trial, nullptr);
-      return merit(dd, c_trial) <= merit_now + 1e-4 * alpha * slope;
+      const Point_matrix Y = positions(dd);
+      constraints.evaluate(Y, variable, n, c_trial, nullptr);
+      return objective.value(Y) + nu * c_trial.norm() <= merit_now + 1e-4 * alpha * slope;
     };
     // Trust region on the largest vertex move, in edge lengths: far from a
     // solution the linearization is poor and a full step can fold the mesh.
@@ -280,7 +270,7 @@ Solver_report constrained_gauss_newton_attempt(const Solver_input& in, const Sol
     projection.evaluate(X, variable, n, c, &J);
     // The floor bounds the conditioning, so that round-off is not amplified.
     const double mu = (std::max)(theta * c.cwiseAbs().maxCoeff() / ell, 1e-8);
-    solver.compute(Matrix(Matrix(J.transpose() * J) + mu * H));
+    solver.compute(Matrix(Matrix(J.transpose() * J) + mu * objective.isotropic_hessian()));
     if(solver.info() != Eigen::Success) // mu too small for round-off: damp more
     {
       theta *= 4;

@@ -84,25 +84,34 @@ Eigen::SparseMatrix<double> fairness_operator(const PolygonMesh& pm, const Verte
   return D;
 }
 
-// The fairness operator of `pm` with the features of the geometry `points`
-// (the input surface): `feature_angle` (degrees, default 60) or CGAL's
-// `edge_is_constrained_map` when given.
+// The vertices on sharp features and the corners of the boundary of `pm`
+// with the geometry `points` (the input surface): `feature_angle` (degrees,
+// default 60) or CGAL's `edge_is_constrained_map` when given.
 template <typename PolygonMesh, typename NamedParameters>
-Eigen::SparseMatrix<double> fairness_operator(const PolygonMesh& pm, const Point_matrix& points,
-                                              const NamedParameters& np)
+std::vector<bool> feature_vertices(const PolygonMesh& pm, const Point_matrix& points,
+                                   const NamedParameters& np)
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
   typedef typename boost::graph_traits<PolygonMesh>::edge_descriptor edge_descriptor;
-  const auto vim = CGAL::get_initialized_vertex_index_map(pm, np);
   const double feature_angle = choose_parameter(
     get_parameter(np, CGAL::Tilable_surfaces::internal_np::feature_angle), 60.0);
   const bool use_edge_map =
     !parameters::is_default_parameter<NamedParameters, CGAL::internal_np::edge_is_constrained_t>::value;
   const auto ecm = choose_parameter(get_parameter(np, CGAL::internal_np::edge_is_constrained),
                                     CGAL::Static_boolean_property_map<edge_descriptor, false>());
-  return fairness_operator(pm, vim, fairness_exclusions(pm, vim, points, feature_angle,
-                                                        use_edge_map, ecm));
+  return fairness_exclusions(pm, CGAL::get_initialized_vertex_index_map(pm, np), points,
+                             feature_angle, use_edge_map, ecm);
+}
+
+// The fairness operator of `pm`, leaving out the feature vertices of the
+// geometry `points` (the input surface).
+template <typename PolygonMesh, typename NamedParameters>
+Eigen::SparseMatrix<double> fairness_operator(const PolygonMesh& pm, const Point_matrix& points,
+                                              const NamedParameters& np)
+{
+  return fairness_operator(pm, CGAL::get_initialized_vertex_index_map(pm, np),
+                           feature_vertices(pm, points, np));
 }
 
 } // namespace internal

@@ -1,0 +1,208 @@
+// Copyright (c) 2026 Tilable_surfaces contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_STRIP_CANDIDATES_H
+#define CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_STRIP_CANDIDATES_H
+
+// Clusterings that follow the quad strips of the mesh, for the final pool of
+// cluster_quads().
+//
+// A quad strip (a polychord) is a sequence of faces, each entered and left
+// through two opposite edges. Every face lies on two strips, one per pair of
+// opposite edges; on a tube, the strips of one direction are its rings. A
+// ring of quads between two circular vertex loops is one shape, whatever its
+// neighbours, and clusters made of whole rings tie no ring to another. Shape
+// clustering does the opposite on tubes and shells: quads of the same
+// position in a lobe are alike across rings, so clusters cross the rings,
+// and through the edge-sharing graph every ring is forced to one size (the
+// tunnel stand-in became a cylinder, the seashell lost its taper). Whole
+// strips give up the variation along a strip (lobes) instead, which is often
+// cheaper; the displacement prediction decides (K_set_tilable_surface::
+// optimize_closest()).
+//
+// The strips of one direction are merged greedily (least spread of the edge
+// lengths they tie together) down to K, or, if there are fewer than K, the
+// largest clusters are split by shape until K.
+
+#include <CGAL/Tilable_surfaces/internal/Clustering/cluster_analysis.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/initial_clustering.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/parallel_for.h>
+#include <CGAL/Tilable_surfaces/quad_shape.h>
+
+#include <CGAL/Random.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <boost/pending/disjoint_sets.hpp>
+
+#include <algorithm>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Tilable_surfaces {
+namespace internal {
+
+// Cluster ids renumbered by first face: cluster of face 0 is 0, and so on.
+inline std::size_t relabel_by_first_face(std::vector<std::size_t>& label)
+{
+  std::vector<std::size_t> id;
+  std::size_t next = 0;
+  for(std::size_t& l : label)
+  {
+    if(l >= id.size()) id.resize(l + 1, no_index());
+    if(id[l] == no_index()) id[l] = next++;
+    l = id[l];
+  }
+  return next;
+}
+
+// Splits the largest initial clusters until there are k of them.
+inline void split_to(std::size_t k, const std::vector<Quad>& quads,
+                     const std::vector<Quad_descriptor>& descriptors, Orientation_policy policy,
+                     CGAL::Random& random, Initial_clustering& init)
+{
+  while(init.leaders.size() < k)
+  {
+    std::vector<std::vector<std::size_t> > members =
+      cluster_members(init.cluster, init.leaders.size());
+    std::size_t largest = 0;
+    for(std::size_t c = 1; c < members.size(); ++c)
+      if(members[c].size() > members[largest].size()) largest = c;
+    const std::vector<bool> second =
+      split_in_two(quads, descriptors, members[largest], policy, random);
+    const std::size_t c = init.leaders.size();
+    std::size_t leader = no_index();
+    for(std::size_t i = 0; i < second.size(); ++i)
+    {
+      if(!second[i]) continue;
+      const std::size_t f = members[largest][i];
+      if(leader == no_index()) leader = f;
+      init.cluster[f] = c;
+      init.orientation[f] = fast_best_match(quads[leader], quads[f], policy).orientation;
+    }
+    init.leaders.push_back(leader);
+  }
+}
+
+// The strip of every face in each direction: strip[d][f] for the strip that
+// crosses face f through its face edges d and d + 2 (numbered 0..S_d - 1 by
+// first face).
+template <typename PolygonMesh, typename FaceIndexMap>
+std::array<std::vector<std::size_t>, 2> quad_strips(const PolygonMesh& pm, FaceIndexMap fim)
+{
+  const std::size_t n = num_faces(pm);
+  boost::disjoint_sets_with_storage<> sets(2 * n);
+  for(std::size_t i = 0; i < 2 * n; ++i)
+    sets.make_set(i);
+  // Node 2 f + (j mod 2): face f's strip through its face edge j, where face
+  // edge j is next^{j+1}(halfedge(f)) (see Edge_sharing_graph).
+  auto node = [&](typename boost::graph_traits<PolygonMesh>::halfedge_descriptor h) {
+    const auto f = face(h, pm);
+    auto g = halfedge(f, pm);
+    for(int j = 0; j < 4; ++j)
+    {
+      g = next(g, pm);
+      if(g == h)
+        return 2 * std::size_t(get(fim, f)) + std::size_t(j % 2);
+    }
+    return 2 * std::size_t(get(fim, f));
+  };
+  for(auto e : edges(pm))
+  {
+    const auto h = halfedge(e, pm);
+    if(is_border_edge(h, pm))
+      continue;
+    sets.union_set(node(h), node(opposite(h, pm)));
+  }
+  std::array<std::vector<std::size_t>, 2> strip{{std::vector<std::size_t>(n), std::vector<std::size_t>(n)}};
+  for(int d = 0; d < 2; ++d)
+  {
+    for(std::size_t f = 0; f < n; ++f)
+      strip[d][f] = sets.find_set(2 * f + std::size_t(d));
+    relabel_by_first_face(strip[d]);
+  }
+  return strip;
+}
+
+// Greedy merges of the clusters of `label` (S of them) down to k: each time
+// the pair whose merge spreads the input's edge lengths least
+// (Edge_sharing_graph::length_deviation_after_merge(), the S-quads matched by
+// their best correspondence), so that merged strips tie few lengths together
+// (on a tube: congruent rings first, then rings of close radii). Labels are
+// renumbered by first face.
+template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
+void merge_strips_to(std::size_t k, const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
+                     const std::vector<Quad>& quads, Orientation_policy policy,
+                     std::vector<std::size_t>& label, std::size_t s)
+{
+  const Cluster_shapes shapes = cluster_shapes(quads, label, s, policy);
+  Edge_sharing_graph<PolygonMesh> graph = edge_sharing_graph(pm, fim, vpm, label, shapes.orientation, s);
+  std::vector<std::size_t> parent(s);
+  for(std::size_t c = 0; c < s; ++c)
+    parent[c] = c;
+  std::vector<Quad_orientation> correspondence(s * s);
+  parallel_for(s, [&](std::size_t a) {
+    for(std::size_t b = a + 1; b < s; ++b)
+      correspondence[a * s + b] = fast_best_match(shapes.s_quads[a], shapes.s_quads[b], policy).orientation;
+  });
+  for(std::size_t count = s; count > k; --count)
+  {
+    double best = (std::numeric_limits<double>::max)();
+    std::size_t kept = 0, removed = 0;
+    for(std::size_t a = 0; a < s; ++a)
+      for(std::size_t b = a + 1; graph.is_alive(a) && b < s; ++b)
+        if(graph.is_alive(b))
+        {
+          const double x = graph.length_deviation_after_merge(a, b, correspondence[a * s + b]);
+          if(x < best) { best = x; kept = a; removed = b; }
+        }
+    graph.merge_clusters(kept, removed, correspondence[kept * s + removed]);
+    parent[removed] = kept;
+  }
+  for(std::size_t& l : label)
+  {
+    while(parent[l] != l) l = parent[l];
+  }
+  relabel_by_first_face(label);
+}
+
+// The strip clusterings with k clusters, one per direction, of a mesh with
+// face quads `quads`. A direction with more than `max_strips` strips (long
+// greedy merges) is left out.
+template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
+std::vector<std::vector<std::size_t> >
+strip_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, const std::vector<Quad>& quads,
+                  const std::vector<Quad_descriptor>& descriptors, std::size_t k,
+                  Orientation_policy policy, CGAL::Random& random, std::size_t max_strips = 400)
+{
+  std::vector<std::vector<std::size_t> > result;
+  for(std::vector<std::size_t>& label : quad_strips(pm, fim))
+  {
+    const std::size_t s = 1 + *std::max_element(label.begin(), label.end());
+    if(s > max_strips)
+      continue;
+    if(s > k)
+      merge_strips_to(k, pm, fim, vpm, quads, policy, label, s);
+    else if(s < k)
+    {
+      Initial_clustering init;
+      init.cluster = label;
+      init.orientation.assign(label.size(), Quad_orientation());
+      init.leaders.assign(s, no_index());
+      for(std::size_t f = label.size(); f-- > 0;)
+        init.leaders[label[f]] = f;
+      split_to(k, quads, descriptors, policy, random, init);
+      label = init.cluster;
+      relabel_by_first_face(label);
+    }
+    if(std::find(result.begin(), result.end(), label) == result.end())
+      result.push_back(label);
+  }
+  return result;
+}
+
+} // namespace internal
+} // namespace Tilable_surfaces
+} // namespace CGAL
+
+#endif // CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_STRIP_CANDIDATES_H

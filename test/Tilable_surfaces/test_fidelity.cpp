@@ -1,0 +1,188 @@
+// Fidelity: the measure both ways, the regularizer of the default solver, the
+// displacement prediction, and the fidelity search of make_k_set_tilable(),
+// each against values that can be checked by hand.
+
+#include "grid_mesh.h"
+#include "optimization_test_helpers.h"
+
+#include <CGAL/Tilable_surfaces/internal/Optimization/closeness_objective.h>
+#include <CGAL/Tilable_surfaces/make_k_set_tilable.h>
+#include <CGAL/Tilable_surfaces/measure.h>
+#include <CGAL/Tilable_surfaces/optimize_tilable_surface.h>
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+using namespace test_helpers;
+namespace TSP = CGAL::Tilable_surfaces::parameters;
+
+namespace {
+
+// An open tube of revolution about the z axis: `rings` rings of `around`
+// quads between rings + 1 circular vertex loops, loop i at height i * 0.25
+// with radius radius(i). Each ring is one quad shape (a ring of quads between
+// two circles), determined by the radii of its two loops.
+template <typename Radius>
+Mesh tube(int rings, int around, Radius radius)
+{
+  Mesh m;
+  std::vector<Vertex> v;
+  for(int i = 0; i <= rings; ++i)
+    for(int j = 0; j < around; ++j)
+    {
+      const double a = 2 * CGAL_PI * j / around;
+      v.push_back(m.add_vertex(Point(radius(i) * std::cos(a), radius(i) * std::sin(a), 0.25 * i)));
+    }
+  auto id = [&](int i, int j) { return v[i * around + (j % around)]; };
+  for(int i = 0; i < rings; ++i)
+    for(int j = 0; j < around; ++j)
+      m.add_face(id(i, j), id(i, j + 1), id(i + 1, j + 1), id(i + 1, j));
+  return m;
+}
+
+// Mean distance to the z axis of the vertices of loop i.
+double loop_radius(const Mesh& m, int i, int around)
+{
+  double sum = 0;
+  for(int j = 0; j < around; ++j)
+  {
+    const Point& p = m.point(Vertex(i * around + j));
+    sum += std::hypot(p.x(), p.y());
+  }
+  return sum / around;
+}
+
+} // namespace
+
+// The result squeezed into the left half of the input square lies on the
+// input (distance 0 that way), but leaves the right half uncovered: the
+// farthest input point, on the right edge, is 1/2 from the result.
+TEST(Fidelity, CoverageSeesAResultThatLeftPartOfTheInput)
+{
+  const Mesh input = grid<Mesh>(4, 4, 0.25, 0.25);
+  Mesh result = input;
+  for(Vertex v : vertices(result))
+    result.point(v) = Point(0.5 * result.point(v).x(), result.point(v).y(), 0);
+  Clustering c = every_face_alone(result);
+  const TS::Tilability_measure m = TS::measure_tilability(
+    result, input, TSP::face_cluster_map(c.cluster).face_orientation_map(c.orientation));
+  const double diagonal = std::sqrt(2.0);
+  EXPECT_LE(m.max_approximation_error, 1e-15);
+  EXPECT_NEAR(m.max_coverage_error, 0.5 / diagonal, 1e-12);
+  EXPECT_NEAR(m.hausdorff_distance, 0.5 / diagonal, 1e-12);
+  EXPECT_GT(m.mean_coverage_error, 0.0);
+  // In mean edge lengths of the input (0.25): 0.5 / 0.25 = 2.
+  EXPECT_NEAR(m.in_input_edge_lengths(m.hausdorff_distance), 2.0, 1e-12);
+}
+
+// The default solver's regularizer (closeness_objective.h) with no
+// closeness term: zero, with a zero gradient, for any rigid motion of the
+// whole mesh; positive for a bend.
+TEST(Fidelity, RegularizerIsZeroForARigidMotion)
+{
+  const Mesh mesh = tube(4, 8, [](int i) { return 1.0 + 0.1 * i; });
+  Clustering c;
+  Mesh copy = mesh;
+  c = every_face_alone(copy);
+  const TS::internal::Tilable_problem problem = TS::internal::make_tilable_problem(
+    copy, TSP::face_cluster_map(c.cluster).face_orientation_map(c.orientation));
+  const TS::internal::Point_matrix X0 = problem.points;
+  const std::vector<Eigen::Matrix3d> no_closeness(X0.rows(), Eigen::Matrix3d::Zero());
+  std::vector<int> variable;
+  const int n = TS::internal::number_free_unknowns(std::vector<bool>(X0.rows(), false), variable);
+  const TS::internal::Closeness_objective regularizer(problem, X0, no_closeness, 1.0, variable, n);
+
+  const Eigen::Matrix3d R =
+    Eigen::AngleAxisd(0.7, Eigen::Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  TS::internal::Point_matrix moved = (X0 * R.transpose()).rowwise() + Eigen::RowVector3d(3, -1, 2);
+  EXPECT_LE(regularizer.value(moved), 1e-20);
+  EXPECT_LE(regularizer.gradient(moved).cwiseAbs().maxCoeff(), 1e-12);
+  EXPECT_LE(regularizer.value(X0), 1e-24);
+
+  TS::internal::Point_matrix bent = X0;
+  for(Eigen::Index v = 0; v < bent.rows(); ++v)
+    bent(v, 0) += 0.05 * bent(v, 2) * bent(v, 2);
+  EXPECT_GT(regularizer.value(bent), 1e-4);
+}
+
+// The prediction is the solver's first step: on a tiny case whose first
+// step is accepted in full, one iteration moves the vertices exactly as far
+// as predicted.
+TEST(Fidelity, PredictionIsTheFirstStepOfTheSolver)
+{
+  Mesh mesh = grid<Mesh>(2, 1, 1.0, 1.0);
+  mesh.point(Vertex(5)) = Point(2.0, 1.03, 0.01);
+  Clustering c = single_cluster(mesh);
+  const auto np = TSP::face_cluster_map(c.cluster).face_orientation_map(c.orientation);
+  const TS::Displacement_prediction p = TS::predict_displacement(mesh, np);
+  const double diagonal = bbox_diagonal(mesh);
+  ASSERT_GT(p.max_euclidean, 1e-4);
+  const TS::Optimization_result r = TS::optimize_tilable_surface(mesh, np.number_of_iterations(1));
+  ASSERT_EQ(r.iterations, 1);
+  EXPECT_NEAR(r.measure.max_displacement / diagonal, p.max_euclidean, 1e-9 * p.max_euclidean + 1e-15);
+}
+
+// Swiss Re stand-in: already 24-set tilable, so the result does not move.
+TEST(Fidelity, AnAlreadyTilableSurfaceDoesNotMove)
+{
+  Mesh mesh = load("swiss_re.off");
+  const std::vector<Point> before = points_of(mesh);
+  const TS::K_set_tilable_result r = TS::make_k_set_tilable(mesh, TSP::number_of_tiles(24));
+  ASSERT_TRUE(r.is_tilable());
+  EXPECT_LE(r.optimization.measure.hausdorff_distance, 1e-9);
+  double moved = 0;
+  for(Vertex v : vertices(mesh))
+    moved = (std::max)(moved, std::sqrt(CGAL::squared_distance(mesh.point(v), before[v])));
+  EXPECT_LE(moved / bbox_diagonal(mesh), 1e-9);
+}
+
+// A tube with an off-centre waist has 12 ring types; at K = 6 rings must
+// share shapes, which can tie every ring to one radius (a cylinder). The
+// result must keep the waist within 5% and more than one quad shape.
+TEST(Fidelity, TubeKeepsItsWaist)
+{
+  const int rings = 12, around = 16;
+  auto radius = [&](int i) {
+    const double t = double(i) / rings;
+    return 1.0 - 0.3 * std::exp(-(t - 0.4) * (t - 0.4) / 0.05);
+  };
+  Mesh mesh = tube(rings, around, radius);
+  const Mesh input = mesh;
+  int waist = 0;
+  for(int i = 1; i <= rings; ++i)
+    if(radius(i) < radius(waist)) waist = i;
+  const TS::K_set_tilable_result r = TS::make_k_set_tilable(mesh, TSP::number_of_tiles(rings / 2));
+  ASSERT_TRUE(r.is_tilable());
+  EXPECT_NEAR(loop_radius(mesh, waist, around), loop_radius(input, waist, around),
+              0.05 * loop_radius(input, waist, around));
+  // More than one shape: some two S-quads differ by more than 1% of an edge.
+  const std::vector<TS::Quad>& s = r.optimization.measure.s_quads;
+  double most_different = 0;
+  for(std::size_t a = 0; a < s.size(); ++a)
+    for(std::size_t b = a + 1; b < s.size(); ++b)
+      most_different = (std::max)(most_different, TS::dissimilarity(s[a], s[b]));
+  EXPECT_GT(most_different, 0.01 * r.optimization.measure.mean_edge_length);
+}
+
+// The improvement rounds keep a step only when it is better: with rounds,
+// the result is never farther from the input than without.
+TEST(Fidelity, ImprovementRoundsNeverMakeItWorse)
+{
+  const Mesh input = load("monkey_saddle.off");
+  Mesh without = input, with = input;
+  const TS::K_set_tilable_result a = TS::make_k_set_tilable(
+    without, TSP::number_of_tiles(24).number_of_improvement_rounds(0));
+  const TS::K_set_tilable_result b = TS::make_k_set_tilable(
+    with, TSP::number_of_tiles(24).number_of_improvement_rounds(3));
+  const TS::Tilability_measure& ma = a.optimization.measure;
+  const TS::Tilability_measure& mb = b.optimization.measure;
+  if(a.is_tilable())
+  {
+    ASSERT_TRUE(b.is_tilable());
+    EXPECT_LE(mb.hausdorff_distance, ma.hausdorff_distance);
+  }
+  else if(!b.is_tilable())
+    EXPECT_LE(mb.congruence_error, ma.congruence_error);
+}

@@ -16,6 +16,7 @@
 
 #include <CGAL/Tilable_surfaces/IO/report.h>
 #include <CGAL/Tilable_surfaces/IO/tile_catalog.h>
+#include <CGAL/Tilable_surfaces/IO/write_OBJ.h>
 #include <CGAL/Tilable_surfaces/IO/write_PLY.h>
 #include <CGAL/Tilable_surfaces/IO/write_edge_components_PLY.h>
 #include <CGAL/Tilable_surfaces/make_k_set_tilable.h>
@@ -27,6 +28,7 @@
 #endif
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <iomanip>
@@ -83,7 +85,7 @@ Options parse(int argc, char** argv, bool& help)
     ("k,k", po::value<int>(&o.k)->required(), "number K of distinct tiles (S-quads)")
     ("output,o", po::value<std::string>(&o.output)->required(),
      "moved mesh: .ply (with face properties cluster, orientation, red/green/blue), "
-     ".off or .obj (geometry only)")
+     ".obj (a group and a material per tile, OUTPUT.mtl beside it) or .off (geometry only)")
     ("report", po::value<std::string>(&o.report), "JSON report of everything measured")
     ("catalog", po::value<std::string>(&o.catalog), "tile catalog, .csv or .json")
     ("components", po::value<std::string>(&o.components),
@@ -281,15 +283,26 @@ int run(const Options& o)
                                                   .face_orientation_map(orientation)
                                                   .use_binary_mode(!o.ascii));
     });
+  else if(extension(o.output) == "obj")
+  {
+    // OUTPUT.obj with a group and a material per tile, and OUTPUT.mtl beside it.
+    const std::filesystem::path mtl = std::filesystem::path(o.output).replace_extension(".mtl");
+    files.add(o.output, [&](std::ostream& out) {
+      return TS::IO::write_tiled_OBJ(out, mesh, mtl.filename().string(),
+                                     TSP::face_cluster_map(cluster));
+    });
+    files.add(mtl.string(), [&](std::ostream& out) {
+      return TS::IO::write_tiled_MTL(out, mesh, TSP::face_cluster_map(cluster));
+    });
+  }
   else
   {
     if(!o.quiet)
-      std::cerr << "[k_set_tilable] note: " << extension(o.output)
-                << " keeps the geometry only; use .ply for clusters, orientations and colours\n";
-    const std::string ext = extension(o.output);
+      std::cerr << "[k_set_tilable] note: off keeps the geometry only; use .ply for clusters, "
+                   "orientations and colours, or .obj for clusters and colours\n";
     files.add(o.output, [&](std::ostream& out) {
       out << std::setprecision(17);
-      return ext == "off" ? CGAL::IO::write_OFF(out, mesh) : CGAL::IO::write_OBJ(out, mesh);
+      return CGAL::IO::write_OFF(out, mesh);
     });
   }
   if(!o.catalog.empty())

@@ -9,6 +9,7 @@
 
 #include <CGAL/IO/Color.h>
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -55,6 +56,22 @@ inline std::vector<CGAL::IO::Color> cluster_colors(std::size_t number_of_colors)
   }
   return colors;
 }
+
+namespace internal {
+
+// The number of clusters of the faces of `pm`: 1 + the largest id in
+// `clusters` (0 for a mesh without faces), the number of colours and
+// materials the writers emit.
+template <typename PolygonMesh, typename FaceClusterMap>
+std::size_t number_of_face_clusters(const PolygonMesh& pm, const FaceClusterMap& clusters)
+{
+  std::size_t n = 0;
+  for(auto f : faces(pm))
+    n = (std::max)(n, std::size_t(get(clusters, f)) + 1);
+  return n;
+}
+
+} // namespace internal
 
 } // namespace IO
 } // namespace Tilable_surfaces

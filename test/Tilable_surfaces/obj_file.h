@@ -38,18 +38,27 @@ inline double obj_number(const std::string& token)
   return x;
 }
 
+// Splits a statement into its keyword and arguments; false for a blank or
+// comment line.
+inline bool obj_statement(const std::string& line, std::string& keyword, std::vector<std::string>& args)
+{
+  std::istringstream words(line);
+  args.clear();
+  if(!(words >> keyword) || keyword[0] == '#')
+    return false;
+  for(std::string w; words >> w;) args.push_back(w);
+  return true;
+}
+
 inline Obj_file read_obj(std::istream& in)
 {
   Obj_file obj;
-  std::string line, group, material;
+  std::string line, keyword, group, material;
+  std::vector<std::string> args;
   while(std::getline(in, line))
   {
-    std::istringstream words(line);
-    std::string keyword;
-    if(!(words >> keyword) || keyword[0] == '#')
+    if(!obj_statement(line, keyword, args))
       continue;
-    std::vector<std::string> args;
-    for(std::string w; words >> w;) args.push_back(w);
     if(keyword == "mtllib" && args.size() == 1)
       obj.material_library = args[0];
     else if(keyword == "v" && args.size() == 3)
@@ -79,15 +88,12 @@ inline Obj_file read_obj(std::istream& in)
 inline std::vector<Mtl_material> read_mtl(std::istream& in)
 {
   std::vector<Mtl_material> materials;
-  std::string line;
+  std::string line, keyword;
+  std::vector<std::string> args;
   while(std::getline(in, line))
   {
-    std::istringstream words(line);
-    std::string keyword;
-    if(!(words >> keyword) || keyword[0] == '#')
+    if(!obj_statement(line, keyword, args))
       continue;
-    std::vector<std::string> args;
-    for(std::string w; words >> w;) args.push_back(w);
     if(keyword == "newmtl" && args.size() == 1)
       materials.push_back(Mtl_material{args[0]});
     else if(materials.empty())

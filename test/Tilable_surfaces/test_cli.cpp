@@ -192,8 +192,10 @@ TEST(CommandLine, ObjOutputKeepsTheTilesWithItsMaterialLibrary)
   ASSERT_TRUE(CGAL::IO::read_polygon_mesh(data_dir + "/monkey_saddle.off", input));
   EXPECT_EQ(obj.material_library, "saddle.mtl");
   EXPECT_EQ(obj.vertices.size(), input.number_of_vertices());
+  const std::vector<std::vector<std::size_t> > input_faces = face_lists(input);
   EXPECT_EQ(std::set<std::vector<std::size_t> >(obj.faces.begin(), obj.faces.end()),
-            [&] { const auto l = face_lists(input); return std::set<std::vector<std::size_t> >(l.begin(), l.end()); }());
+            std::set<std::vector<std::size_t> >(input_faces.begin(), input_faces.end()))
+    << "the same faces, grouped by tile";
   // Faces per group against the report's cluster sizes; one material per tile.
   std::vector<std::size_t> sizes(std::size_t(k), 0);
   for(std::size_t i = 0; i < obj.faces.size(); ++i)

@@ -197,3 +197,20 @@ TEST(WriteTiledOBJ, WorksForAnotherMeshTypeAndEmptyClusters)
   for(int c = 0; c < 11; ++c) colors.emplace(c, palette[std::size_t(c)]);
   expect_materials(read_mtl(mtl_in), colors, 11);
 }
+
+TEST(WriteTiledOBJ, RefusesANegativeClusterIdAndCreatesNoFile)
+{
+  Mesh mesh;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(data_dir + "/monkey_saddle.off", mesh));
+  auto cluster = mesh.add_property_map<Mesh::Face_index, int>("f:c", 0).first;
+  cluster[Mesh::Face_index(17)] = -2;
+  const fs::path dir = scratch("negative");
+  EXPECT_THROW(TS::IO::write_tiled_OBJ((dir / "bad.obj").string(), mesh, TSP::face_cluster_map(cluster)),
+               TS::Invalid_input);
+  EXPECT_TRUE(fs::is_empty(dir));
+  std::ostringstream obj_out, mtl_out;
+  EXPECT_THROW(TS::IO::write_tiled_OBJ(obj_out, mesh, "bad.mtl", TSP::face_cluster_map(cluster)),
+               TS::Invalid_input);
+  EXPECT_TRUE(obj_out.str().empty());
+  EXPECT_THROW(TS::IO::write_tiled_MTL(mtl_out, mesh, TSP::face_cluster_map(cluster)), TS::Invalid_input);
+}

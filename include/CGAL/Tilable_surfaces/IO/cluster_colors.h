@@ -7,6 +7,8 @@
 /// \file cluster_colors.h
 /// A distinct, deterministic colour per cluster, for coloured output meshes.
 
+#include <CGAL/Tilable_surfaces/exceptions.h>
+
 #include <CGAL/IO/Color.h>
 
 #include <algorithm>
@@ -14,6 +16,8 @@
 #include <cmath>
 #include <cstddef>
 #include <set>
+#include <string>
+#include <type_traits>
 #include <vector>
 
 namespace CGAL {
@@ -59,6 +63,17 @@ inline std::vector<CGAL::IO::Color> cluster_colors(std::size_t number_of_colors)
 
 namespace internal {
 
+// The cluster id `id` as an index; a negative id is refused.
+template <typename Id>
+std::size_t cluster_index(const Id& id)
+{
+  if constexpr(std::is_signed<Id>::value)
+    if(id < 0)
+      throw Invalid_input("a face has the negative cluster id " + std::to_string(id) +
+                          " (cluster ids are 0..K-1)", Invalid_input::FACE);
+  return std::size_t(id);
+}
+
 // The number of clusters of the faces of `pm`: 1 + the largest id in
 // `clusters` (0 for a mesh without faces), the number of colours and
 // materials the writers emit.
@@ -67,7 +82,7 @@ std::size_t number_of_face_clusters(const PolygonMesh& pm, const FaceClusterMap&
 {
   std::size_t n = 0;
   for(auto f : faces(pm))
-    n = (std::max)(n, std::size_t(get(clusters, f)) + 1);
+    n = (std::max)(n, cluster_index(get(clusters, f)) + 1);
   return n;
 }
 

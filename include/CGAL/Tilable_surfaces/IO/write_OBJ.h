@@ -57,6 +57,14 @@ private:
   std::streamsize m_precision;
 };
 
+// The writers need the clusters.
+template <typename NamedParameters>
+void require_face_cluster_map()
+{
+  static_assert(!parameters::is_default_parameter<NamedParameters, internal_np::face_cluster_t>::value,
+                "the named parameter face_cluster_map is required");
+}
+
 // The name of the group and of the material of cluster `c`.
 inline std::string tile_name(std::size_t c) { return "tile_" + std::to_string(c); }
 
@@ -72,10 +80,12 @@ inline std::string tile_name(std::size_t c) { return "tile_" + std::to_string(c)
 ///   \cgalParamNBegin{face_cluster_map} cluster ids 0..K-1 (required) \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// \returns whether the stream is good after writing.
+/// \throws Invalid_input if a cluster id is negative.
 template <typename PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 bool write_tiled_MTL(std::ostream& os, const PolygonMesh& pm,
-                     const CGAL_NP_CLASS& np = parameters::default_values())
+                     const CGAL_NP_CLASS& np)
 {
+  internal::require_face_cluster_map<CGAL_NP_CLASS>();
   const std::vector<CGAL::IO::Color> colors = cluster_colors(
     internal::number_of_face_clusters(pm, parameters::get_parameter(np, internal_np::face_cluster)));
   internal::Stream_format_guard guard(os);
@@ -113,10 +123,12 @@ bool write_tiled_MTL(std::ostream& os, const PolygonMesh& pm,
 ///   \cgalParamNBegin{vertex_point_map} the points of `pm` \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// \returns whether the stream is good after writing.
+/// \throws Invalid_input if a cluster id is negative; nothing is written then.
 template <typename PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 bool write_tiled_OBJ(std::ostream& os, const PolygonMesh& pm, const std::string& material_library,
-                     const CGAL_NP_CLASS& np = parameters::default_values())
+                     const CGAL_NP_CLASS& np)
 {
+  internal::require_face_cluster_map<CGAL_NP_CLASS>();
   using parameters::choose_parameter;
   using parameters::get_parameter;
   typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
@@ -125,6 +137,14 @@ bool write_tiled_OBJ(std::ostream& os, const PolygonMesh& pm, const std::string&
   const auto clusters = get_parameter(np, internal_np::face_cluster);
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_const_property_map(CGAL::vertex_point, pm));
+
+  // The faces cluster by cluster, checked before anything is written.
+  std::vector<std::pair<std::size_t, face_descriptor> > by_cluster;
+  for(face_descriptor f : faces(pm))
+    by_cluster.emplace_back(internal::cluster_index(get(clusters, f)), f);
+  std::stable_sort(by_cluster.begin(), by_cluster.end(),
+                   [](const std::pair<std::size_t, face_descriptor>& a,
+                      const std::pair<std::size_t, face_descriptor>& b) { return a.first < b.first; });
 
   internal::Stream_format_guard guard(os);
   os.unsetf(std::ios::floatfield);
@@ -141,12 +161,6 @@ bool write_tiled_OBJ(std::ostream& os, const PolygonMesh& pm, const std::string&
     obj_index.emplace(v, obj_index.size() + 1);
   }
 
-  std::vector<std::pair<std::size_t, face_descriptor> > by_cluster;
-  for(face_descriptor f : faces(pm))
-    by_cluster.emplace_back(std::size_t(get(clusters, f)), f);
-  std::stable_sort(by_cluster.begin(), by_cluster.end(),
-                   [](const std::pair<std::size_t, face_descriptor>& a,
-                      const std::pair<std::size_t, face_descriptor>& b) { return a.first < b.first; });
   for(std::size_t i = 0; i < by_cluster.size(); ++i)
   {
     if(i == 0 || by_cluster[i].first != by_cluster[i - 1].first)
@@ -171,10 +185,13 @@ bool write_tiled_OBJ(std::ostream& os, const PolygonMesh& pm, const std::string&
 ///   \cgalParamNBegin{vertex_point_map} the points of `pm` \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// \returns whether both files were written completely.
+/// \throws Invalid_input if a cluster id is negative; no file is created then.
 template <typename PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
-bool write_tiled_OBJ(const std::string& obj_path, const PolygonMesh& pm,
-                     const CGAL_NP_CLASS& np = parameters::default_values())
+bool write_tiled_OBJ(const std::string& obj_path, const PolygonMesh& pm, const CGAL_NP_CLASS& np)
 {
+  internal::require_face_cluster_map<CGAL_NP_CLASS>();
+  // Checks the ids before any file is created.
+  internal::number_of_face_clusters(pm, parameters::get_parameter(np, internal_np::face_cluster));
   const std::filesystem::path mtl_path = std::filesystem::path(obj_path).replace_extension(".mtl");
   std::ofstream obj(obj_path), mtl(mtl_path);
   return obj && mtl && write_tiled_OBJ(obj, pm, mtl_path.filename().string(), np) &&

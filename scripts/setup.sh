@@ -16,7 +16,9 @@ else
   packages=(g++ cmake make libcgal-dev libeigen3-dev libboost-dev libboost-program-options-dev
             libgtest-dev nlohmann-json3-dev
             # optional, used when present: parallel loops and the CHOLMOD sparse solver
-            libtbb-dev libsuitesparse-dev)
+            libtbb-dev libsuitesparse-dev
+            # optional, used when present: the Python module tilable_surfaces (build/python/)
+            pybind11-dev python3-dev python3-numpy)
 fi
 missing=()
 for p in "${packages[@]}"; do

@@ -2,6 +2,7 @@
 //
 //   k_set_tilable INPUT -k K -o OUTPUT.ply [--report REPORT.json] [--catalog TILES.csv|TILES.json]
 //                 [--components EDGES.ply] [--distance-weight W] [--fairness-weight W]
+//                 [--tangential-weight W] [--optimized-candidates N] [--improvement-rounds N]
 //                 [--candidates N] [--solver gauss-newton|paper-cg] [--fixed-boundary]
 //                 [--iterations N] [--seed S] [--threads N] [--ascii] [--quiet] [--help]
 //
@@ -16,6 +17,7 @@
 
 #include <CGAL/Tilable_surfaces/IO/report.h>
 #include <CGAL/Tilable_surfaces/IO/tile_catalog.h>
+#include <CGAL/Tilable_surfaces/IO/write_OBJ.h>
 #include <CGAL/Tilable_surfaces/IO/write_PLY.h>
 #include <CGAL/Tilable_surfaces/IO/write_edge_components_PLY.h>
 #include <CGAL/Tilable_surfaces/make_k_set_tilable.h>
@@ -27,6 +29,7 @@
 #endif
 
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <functional>
 #include <iomanip>
@@ -54,7 +57,9 @@ struct Options
 {
   std::string input, output, report, catalog, components;
   int k = 0;
-  double distance_weight = 1e-4, fairness_weight = 1e-4;
+  double distance_weight = 1e-4, fairness_weight = -1; // negative: the solver's default
+  double tangential_weight = 0.1;
+  int optimized_candidates = 2, improvement_rounds = 2;
   int candidates = 10, iterations = -1, threads = 0;
   unsigned int seed = 0;
   std::string solver = "gauss-newton";
@@ -83,14 +88,22 @@ Options parse(int argc, char** argv, bool& help)
     ("k,k", po::value<int>(&o.k)->required(), "number K of distinct tiles (S-quads)")
     ("output,o", po::value<std::string>(&o.output)->required(),
      "moved mesh: .ply (with face properties cluster, orientation, red/green/blue), "
-     ".off or .obj (geometry only)")
+     ".obj (a group and a material per tile, OUTPUT.mtl beside it) or .off (geometry only)")
     ("report", po::value<std::string>(&o.report), "JSON report of everything measured")
     ("catalog", po::value<std::string>(&o.catalog), "tile catalog, .csv or .json")
     ("components", po::value<std::string>(&o.components),
      "PLY picture of the edge-sharing components (paper Fig. 6)")
     ("distance-weight", po::value<double>(&o.distance_weight)->default_value(1e-4),
      "mu1, closeness to the input")
-    ("fairness-weight", po::value<double>(&o.fairness_weight)->default_value(1e-4), "mu2, fairness")
+    ("fairness-weight", po::value<double>(&o.fairness_weight),
+     "mu2: default solver, rigidity of the displacement (default 1e-6); paper-cg, the paper's "
+     "fairness (default 1e-4)")
+    ("tangential-weight", po::value<double>(&o.tangential_weight)->default_value(0.1),
+     "default solver: cost of sliding in the input surface relative to leaving it, in (0, 1]")
+    ("optimized-candidates", po::value<int>(&o.optimized_candidates)->default_value(2),
+     "default solver: clusterings optimized fully, the closest result is kept")
+    ("improvement-rounds", po::value<int>(&o.improvement_rounds)->default_value(2),
+     "default solver: rounds of split, merge and re-optimization, each kept only if better")
     ("candidates", po::value<int>(&o.candidates)->default_value(10),
      "candidate configurations kept while clustering")
     ("solver", po::value<std::string>(&o.solver)->default_value("gauss-newton"),
@@ -144,8 +157,12 @@ Options parse(int argc, char** argv, bool& help)
     throw Usage_error("--iterations must be >= 0");
   if(o.threads < 0)
     throw Usage_error("--threads must be >= 0");
-  if(!(o.distance_weight > 0) || !(o.fairness_weight >= 0))
+  if(!(o.distance_weight > 0) || !(o.fairness_weight >= 0 || o.fairness_weight == -1))
     throw Usage_error("--distance-weight must be > 0 and --fairness-weight >= 0");
+  if(!(o.tangential_weight > 0 && o.tangential_weight <= 1))
+    throw Usage_error("--tangential-weight must be in (0, 1]");
+  if(o.optimized_candidates < 1 || o.improvement_rounds < 0)
+    throw Usage_error("--optimized-candidates must be >= 1 and --improvement-rounds >= 0");
   return o;
 }
 
@@ -263,7 +280,11 @@ int run(const Options& o)
               .face_orientation_map(orientation)
               .vertex_is_constrained_map(fixed)
               .distance_weight(o.distance_weight)
-              .fairness_weight(o.fairness_weight)
+              .fairness_weight(o.fairness_weight < 0 ? TS::default_fairness_weight(solver)
+                                                     : o.fairness_weight)
+              .tangential_weight(o.tangential_weight)
+              .number_of_optimized_candidates(std::size_t(o.optimized_candidates))
+              .number_of_improvement_rounds(o.improvement_rounds)
               .number_of_candidates(std::size_t(o.candidates))
               .solver(solver)
               .random_seed(o.seed)
@@ -281,15 +302,26 @@ int run(const Options& o)
                                                   .face_orientation_map(orientation)
                                                   .use_binary_mode(!o.ascii));
     });
+  else if(extension(o.output) == "obj")
+  {
+    // OUTPUT.obj with a group and a material per tile, and OUTPUT.mtl beside it.
+    const std::filesystem::path mtl = std::filesystem::path(o.output).replace_extension(".mtl");
+    files.add(o.output, [&](std::ostream& out) {
+      return TS::IO::write_tiled_OBJ(out, mesh, mtl.filename().string(),
+                                     TSP::face_cluster_map(cluster));
+    });
+    files.add(mtl.string(), [&](std::ostream& out) {
+      return TS::IO::write_tiled_MTL(out, mesh, TSP::face_cluster_map(cluster));
+    });
+  }
   else
   {
     if(!o.quiet)
-      std::cerr << "[k_set_tilable] note: " << extension(o.output)
-                << " keeps the geometry only; use .ply for clusters, orientations and colours\n";
-    const std::string ext = extension(o.output);
+      std::cerr << "[k_set_tilable] note: off keeps the geometry only; use .ply for clusters, "
+                   "orientations and colours, or .obj for clusters and colours\n";
     files.add(o.output, [&](std::ostream& out) {
       out << std::setprecision(17);
-      return ext == "off" ? CGAL::IO::write_OFF(out, mesh) : CGAL::IO::write_OBJ(out, mesh);
+      return CGAL::IO::write_OFF(out, mesh);
     });
   }
   if(!o.catalog.empty())
@@ -314,7 +346,12 @@ int run(const Options& o)
                        {"faces", input.number_of_faces()}};
     report["parameters"] = {{"K", o.k},
                             {"distance_weight", o.distance_weight},
-                            {"fairness_weight", o.fairness_weight},
+                            {"fairness_weight", o.fairness_weight < 0
+                                                  ? TS::default_fairness_weight(solver)
+                                                  : o.fairness_weight},
+                            {"tangential_weight", o.tangential_weight},
+                            {"optimized_candidates", o.optimized_candidates},
+                            {"improvement_rounds", o.improvement_rounds},
                             {"candidates", o.candidates},
                             {"solver", o.solver},
                             {"fixed_boundary", o.fixed_boundary},

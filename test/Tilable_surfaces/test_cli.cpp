@@ -8,6 +8,7 @@
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 
 #include "csv_cells.h"
+#include "obj_file.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -171,6 +172,42 @@ void expect_refused(const fs::path& dir, const std::string& arguments, const std
 TEST(CommandLine, DeBeersGinzaEndToEnd) { check_run_on("de_beers_ginza.off", 48, "csv"); }
 
 TEST(CommandLine, SwissReTowerEndToEnd) { check_run_on("swiss_re.off", 24, "json"); }
+
+TEST(CommandLine, ObjOutputKeepsTheTilesWithItsMaterialLibrary)
+{
+  const fs::path dir = scratch("obj");
+  const int k = 5;
+  const Run_result r = run(data_dir + "/monkey_saddle.off -k " + std::to_string(k) + " -o " +
+                           (dir / "saddle.obj").string() + " --report " + (dir / "r.json").string());
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  std::set<std::string> created;
+  for(const auto& entry : fs::directory_iterator(dir)) created.insert(entry.path().filename().string());
+  EXPECT_EQ(created, (std::set<std::string>{"saddle.obj", "saddle.mtl", "r.json"})) << "no temporary left";
+
+  std::ifstream obj_in(dir / "saddle.obj"), mtl_in(dir / "saddle.mtl"), report_in(dir / "r.json");
+  const Obj_file obj = read_obj(obj_in);
+  const std::vector<Mtl_material> materials = read_mtl(mtl_in);
+  const nlohmann::json report = nlohmann::json::parse(report_in);
+  Mesh input;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(data_dir + "/monkey_saddle.off", input));
+  EXPECT_EQ(obj.material_library, "saddle.mtl");
+  EXPECT_EQ(obj.vertices.size(), input.number_of_vertices());
+  const std::vector<std::vector<std::size_t> > input_faces = face_lists(input);
+  EXPECT_EQ(std::set<std::vector<std::size_t> >(obj.faces.begin(), obj.faces.end()),
+            std::set<std::vector<std::size_t> >(input_faces.begin(), input_faces.end()))
+    << "the same faces, grouped by tile";
+  // Faces per group against the report's cluster sizes; one material per tile.
+  std::vector<std::size_t> sizes(std::size_t(k), 0);
+  for(std::size_t i = 0; i < obj.faces.size(); ++i)
+  {
+    EXPECT_EQ(obj.face_material[i], obj.face_group[i]);
+    ASSERT_EQ(obj.face_group[i].rfind("tile_", 0), 0u) << obj.face_group[i];
+    ++sizes.at(std::stoul(obj.face_group[i].substr(5)));
+  }
+  EXPECT_EQ(sizes, report["cluster_sizes"].get<std::vector<std::size_t> >());
+  ASSERT_EQ(materials.size(), std::size_t(k));
+  for(int c = 0; c < k; ++c) EXPECT_EQ(materials[std::size_t(c)].name, "tile_" + std::to_string(c));
+}
 
 TEST(CommandLine, HelpExitsZero)
 {

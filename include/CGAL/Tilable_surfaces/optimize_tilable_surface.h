@@ -236,8 +236,9 @@ struct Optimization_setup
 ///   \cgalParamNBegin{visitor} a model of `Default_optimization_visitor`'s
 ///     interface, copied \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_point_map} the points of the vertices \cgalParamNEnd
-///   \cgalParamNBegin{vertex_index_map}, \cgalParamNBegin{face_index_map}
-///     indices, for messages and internal arrays \cgalParamNEnd
+///   \cgalParamNBegin{vertex_index_map} indices of the vertices, for messages
+///     and internal arrays \cgalParamNEnd
+///   \cgalParamNBegin{face_index_map} indices of the faces, likewise \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \returns the iterations, whether the measured congruence error reached the

@@ -81,10 +81,8 @@ bool write_tiled_PLY(std::ostream& os, const PolygonMesh& pm,
     face_pairs.emplace_back(f, out.add_face(corners));
   }
 
-  std::size_t number_of_clusters = 0;
-  for(face_descriptor f : faces(pm))
-    number_of_clusters = (std::max)(number_of_clusters, std::size_t(get(clusters, f)) + 1);
-  const std::vector<CGAL::IO::Color> colors = cluster_colors(number_of_clusters);
+  const std::vector<CGAL::IO::Color> colors =
+    cluster_colors(internal::number_of_face_clusters(pm, clusters));
 
   auto cluster_property = out.add_property_map<Output_mesh::Face_index, int>("f:cluster", 0).first;
   auto orientation_property =

@@ -1,0 +1,161 @@
+#!/usr/bin/env python3
+"""The Python module tilable_surfaces, checked with numpy only.
+
+    PYTHONPATH=build/python python3 test_python_module.py MESH.off EXAMPLE.py
+
+Runs make_k_set_tilable on a small quad mesh (read with the example's OFF
+reader) and checks its result independently: each face's corners, read in its
+orientation, against its cluster's S-quad by a Kabsch rigid fit of our own;
+the displacement; the cluster sizes. Then that bad input raises ValueError
+with the package's message, and that the GIL is released during the run.
+"""
+import importlib.util
+import sys
+import threading
+import time
+import unittest
+
+import numpy as np
+
+import tilable_surfaces
+
+MESH, EXAMPLE = sys.argv[1], sys.argv[2]
+K = 7
+
+
+def load_example():
+    spec = importlib.util.spec_from_file_location("make_k_set_tilable_example", EXAMPLE)
+    module = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(module)
+    return module
+
+
+def mean_edge_length(vertices, faces):
+    edges = np.concatenate([faces[:, [i, (i + 1) % 4]] for i in range(4)])
+    edges = np.unique(np.sort(edges, axis=1), axis=0)
+    return np.linalg.norm(vertices[edges[:, 0]] - vertices[edges[:, 1]], axis=1).mean()
+
+
+def corner_of(i, o):
+    """The face vertex that template corner i goes to with orientation o."""
+    return (i + o) % 4 if o < 4 else (o - i) % 4
+
+
+def kabsch_deviation(template, target):
+    """Largest corner distance after the best proper rigid motion of template onto target."""
+    a = template - template.mean(axis=0)
+    b = target - target.mean(axis=0)
+    u, _, vt = np.linalg.svd(a.T @ b)
+    d = np.sign(np.linalg.det(vt.T @ u.T))
+    rotation = vt.T @ np.diag([1.0, 1.0, d]) @ u.T
+    return np.linalg.norm(a @ rotation.T - b, axis=1).max()
+
+
+def congruence_error(result, faces, corner=corner_of):
+    vertices = result["vertices"]
+    worst = 0.0
+    for f, face in enumerate(faces):
+        o = int(result["orientation"][f])
+        instance = vertices[[face[corner(i, o)] for i in range(4)]]
+        worst = max(worst, kabsch_deviation(result["s_quads"][result["cluster"][f]], instance))
+    return worst / mean_edge_length(vertices, faces)
+
+
+class MakeKSetTilable(unittest.TestCase):
+    @classmethod
+    def setUpClass(cls):
+        cls.vertices, cls.faces = load_example().read_off(MESH)
+        cls.result = tilable_surfaces.make_k_set_tilable(cls.vertices, cls.faces, k=K, seed=3,
+                                                         number_of_candidates=8, threads=1)
+
+    def test_arrays(self):
+        r, n, m = self.result, len(self.vertices), len(self.faces)
+        self.assertEqual(r["vertices"].shape, (n, 3))
+        self.assertEqual(r["vertices"].dtype, np.float64)
+        self.assertEqual(r["cluster"].shape, (m,))
+        self.assertEqual(r["orientation"].shape, (m,))
+        self.assertEqual(r["s_quads"].shape, (K, 4, 3))
+        self.assertEqual(r["number_of_clusters"], K)
+        self.assertEqual(set(r["cluster"].tolist()), set(range(K)))
+        self.assertTrue(np.all((r["orientation"] >= 0) & (r["orientation"] < 8)))
+        self.assertEqual(np.bincount(r["cluster"], minlength=K).tolist(), r["cluster_sizes"].tolist())
+        self.assertGreater(r["degree_of_flexibility"], 0)
+
+    def test_congruence_by_our_own_rigid_fits(self):
+        r = self.result
+        self.assertTrue(r["is_tilable"])
+        ours = congruence_error(r, self.faces)
+        self.assertLessEqual(ours, 1e-6)
+        self.assertAlmostEqual(ours, r["congruence_error"], delta=1e-9)
+        # The check has teeth: the surface was moved, and another corner
+        # convention (the reversed direction) does not fit.
+        self.assertGreater(congruence_error(dict(r, vertices=self.vertices), self.faces), 1e-4)
+        self.assertGreater(congruence_error(r, self.faces, lambda i, o: corner_of((4 - i) % 4, o)), 1e-4)
+
+    def test_distances(self):
+        r = self.result
+        displacement = np.linalg.norm(r["vertices"] - self.vertices, axis=1)
+        self.assertAlmostEqual(displacement.max(), r["max_displacement"], delta=1e-12)
+        self.assertAlmostEqual(displacement.mean(), r["mean_displacement"], delta=1e-12)
+        diagonal = np.linalg.norm(self.vertices.max(axis=0) - self.vertices.min(axis=0))
+        self.assertAlmostEqual(diagonal, r["input_bbox_diagonal"], delta=1e-12)
+        # Every vertex of the result is a sample of the approximation error.
+        self.assertLessEqual(r["mean_approximation_error"], r["max_approximation_error"])
+        self.assertLessEqual(r["max_approximation_error"] * diagonal, displacement.max() + 1e-12)
+
+    def test_same_result_with_other_threads_and_arguments_by_keyword(self):
+        again = tilable_surfaces.make_k_set_tilable(self.vertices.tolist(), self.faces.astype(np.int32),
+                                                    k=K, seed=3, number_of_candidates=8, threads=2)
+        np.testing.assert_array_equal(again["cluster"], self.result["cluster"])
+        np.testing.assert_array_equal(again["vertices"], self.result["vertices"])
+
+    def test_bad_input_raises_value_error_with_the_package_message(self):
+        v, f = self.vertices, self.faces
+        bad_vertex = v.copy()
+        bad_vertex[5, 1] = np.nan
+        out_of_range = f.copy()
+        out_of_range[3, 2] = len(v) + 4
+        cases = [
+            (dict(vertices=v, faces=f, k=0), "k must be at least 1"),
+            (dict(vertices=v, faces=f, k=len(f) + 1), "number_of_tiles"),
+            (dict(vertices=v, faces=f[:, :3], k=K), "(m, 4)"),
+            (dict(vertices=v[:, :2], faces=f, k=K), "(n, 3)"),
+            (dict(vertices=v, faces=f.astype(np.float64), k=K), "integers"),
+            (dict(vertices=v, faces=out_of_range, k=K), "face 3 refers to vertex"),
+            (dict(vertices=bad_vertex, faces=f, k=K), "vertex 5"),
+            (dict(vertices=v, faces=f, k=K, solver="magic"), "unknown solver"),
+            (dict(vertices=v, faces=f, k=K, distance_weight=-1.0), "weights"),
+        ]
+        for arguments, message in cases:
+            with self.subTest(message=message):
+                with self.assertRaises(ValueError) as caught:
+                    tilable_surfaces.make_k_set_tilable(**arguments)
+                self.assertTrue(str(caught.exception).startswith("Tilable_surfaces: "), str(caught.exception))
+                self.assertIn(message, str(caught.exception))
+
+    def test_the_gil_is_released_during_the_run(self):
+        # While the run goes on in another thread, this thread keeps running
+        # Python code: the longest pause it sees is much shorter than the run.
+        span = {}
+
+        def work():
+            span["start"] = time.perf_counter()
+            tilable_surfaces.make_k_set_tilable(self.vertices, self.faces, k=K, seed=3, threads=1)
+            span["end"] = time.perf_counter()
+
+        worker = threading.Thread(target=work)
+        longest_pause, last = 0.0, time.perf_counter()
+        worker.start()
+        while worker.is_alive():
+            now = time.perf_counter()
+            if "start" in span:
+                longest_pause = max(longest_pause, now - last)
+            last = now
+        worker.join()
+        duration = span["end"] - span["start"]
+        self.assertGreater(duration, 0.05)
+        self.assertLess(longest_pause, 0.5 * duration)
+
+
+if __name__ == "__main__":
+    unittest.main(argv=sys.argv[:1], verbosity=2)

@@ -59,7 +59,7 @@ struct Options
   int k = 0;
   double distance_weight = 1e-4, fairness_weight = -1; // negative: the solver's default
   double tangential_weight = 0.1;
-  int optimized_candidates = 2, improvement_rounds = 2;
+  int optimized_candidates = 0, improvement_rounds = 2; // 0: the package's default
   int candidates = 10, iterations = -1, threads = 0;
   unsigned int seed = 0;
   std::string solver = "gauss-newton";
@@ -100,8 +100,8 @@ Options parse(int argc, char** argv, bool& help)
      "fairness (default 1e-4)")
     ("tangential-weight", po::value<double>(&o.tangential_weight)->default_value(0.1),
      "default solver: cost of sliding in the input surface relative to leaving it, in (0, 1]")
-    ("optimized-candidates", po::value<int>(&o.optimized_candidates)->default_value(2),
-     "default solver: clusterings optimized fully, the closest result is kept")
+    ("optimized-candidates", po::value<int>(&o.optimized_candidates)->default_value(0),
+     "default solver: clusterings optimized fully, the closest result is kept (0: 2 + 1000 / faces)")
     ("improvement-rounds", po::value<int>(&o.improvement_rounds)->default_value(2),
      "default solver: rounds of split, merge and re-optimization, each kept only if better")
     ("candidates", po::value<int>(&o.candidates)->default_value(10),
@@ -161,8 +161,8 @@ Options parse(int argc, char** argv, bool& help)
     throw Usage_error("--distance-weight must be > 0 and --fairness-weight >= 0");
   if(!(o.tangential_weight > 0 && o.tangential_weight <= 1))
     throw Usage_error("--tangential-weight must be in (0, 1]");
-  if(o.optimized_candidates < 1 || o.improvement_rounds < 0)
-    throw Usage_error("--optimized-candidates must be >= 1 and --improvement-rounds >= 0");
+  if(o.optimized_candidates < 0 || o.improvement_rounds < 0)
+    throw Usage_error("--optimized-candidates and --improvement-rounds must be >= 0");
   return o;
 }
 
@@ -283,7 +283,9 @@ int run(const Options& o)
               .fairness_weight(o.fairness_weight < 0 ? TS::default_fairness_weight(solver)
                                                      : o.fairness_weight)
               .tangential_weight(o.tangential_weight)
-              .number_of_optimized_candidates(std::size_t(o.optimized_candidates))
+              .number_of_optimized_candidates(o.optimized_candidates > 0
+                                                ? std::size_t(o.optimized_candidates)
+                                                : TS::default_number_of_optimized_candidates(num_faces(mesh)))
               .number_of_improvement_rounds(o.improvement_rounds)
               .number_of_candidates(std::size_t(o.candidates))
               .solver(solver)
@@ -350,7 +352,9 @@ int run(const Options& o)
                                                   ? TS::default_fairness_weight(solver)
                                                   : o.fairness_weight},
                             {"tangential_weight", o.tangential_weight},
-                            {"optimized_candidates", o.optimized_candidates},
+                            {"optimized_candidates", o.optimized_candidates > 0
+                                                       ? std::size_t(o.optimized_candidates)
+                                                       : TS::default_number_of_optimized_candidates(num_faces(mesh))},
                             {"improvement_rounds", o.improvement_rounds},
                             {"candidates", o.candidates},
                             {"solver", o.solver},

@@ -32,6 +32,14 @@
 
 namespace CGAL {
 namespace Tilable_surfaces {
+/// \ingroup PkgTilableSurfacesRef
+/// The default of `number_of_optimized_candidates` for a mesh of
+/// `number_of_faces` quads: 2 + 1000 / `number_of_faces`.
+inline std::size_t default_number_of_optimized_candidates(std::size_t number_of_faces)
+{
+  return 2 + 1000 / (std::max)(number_of_faces, std::size_t(1));
+}
+
 namespace internal {
 
 // Visitors may have a `phase(name, seconds)` hook (progress reports); the
@@ -242,7 +250,9 @@ public:
   ///    K = 10: the ring clustering ranks 12th by prediction, first by
   ///    spread, and ends 2x closer than the first by prediction). Taking the
   ///    two rankings in turn, the `number_of_optimized_candidates` first are
-  ///    optimized fully from the input.
+  ///    optimized fully from the input (default 2 + 1000 / number of faces:
+  ///    small meshes solve in a fraction of a second, and there the ranking
+  ///    is least reliable).
   /// -# Then `number_of_improvement_rounds` rounds of edits, K fixed: the
   ///    cluster whose instances moved most (mean off-input distance of its
   ///    corners) is split in two, and of the pairs of clusters whose merge
@@ -270,7 +280,8 @@ public:
       CGAL::internal_np::visitor_t, CGAL_NP_CLASS, Default_optimization_visitor>::type Visitor;
     Visitor visitor = choose_parameter<Visitor>(get_parameter(np, CGAL::internal_np::visitor));
     const std::size_t optimized = (std::max)(std::size_t(1), std::size_t(choose_parameter(
-      get_parameter(np, internal_np::number_of_optimized_candidates), 2)));
+      get_parameter(np, internal_np::number_of_optimized_candidates),
+      default_number_of_optimized_candidates(num_faces(m_mesh)))));
     const int rounds = choose_parameter(get_parameter(np, internal_np::number_of_improvement_rounds), 2);
     CGAL::Real_timer timer;
     timer.start();

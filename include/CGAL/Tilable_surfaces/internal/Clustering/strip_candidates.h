@@ -35,6 +35,7 @@
 #include <boost/pending/disjoint_sets.hpp>
 
 #include <algorithm>
+#include <array>
 #include <limits>
 #include <vector>
 
@@ -166,38 +167,74 @@ void merge_strips_to(std::size_t k, const PolygonMesh& pm, FaceIndexMap fim, Ver
   relabel_by_first_face(label);
 }
 
-// The strip clusterings with k clusters, one per direction, of a mesh with
-// face quads `quads`. A direction with more than `max_strips` strips (long
-// greedy merges) is left out.
+// `label` (with s clusters) brought to exactly k clusters: merged by least
+// spread, or split by shape.
+template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
+void bring_to(std::size_t k, const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
+              const std::vector<Quad>& quads, const std::vector<Quad_descriptor>& descriptors,
+              Orientation_policy policy, CGAL::Random& random, std::vector<std::size_t>& label,
+              std::size_t s)
+{
+  if(s > k)
+    merge_strips_to(k, pm, fim, vpm, quads, policy, label, s);
+  else if(s < k)
+  {
+    Initial_clustering init;
+    init.cluster = label;
+    init.orientation.assign(label.size(), Quad_orientation());
+    init.leaders.assign(s, no_index());
+    for(std::size_t f = label.size(); f-- > 0;)
+      init.leaders[label[f]] = f;
+    split_to(k, quads, descriptors, policy, random, init);
+    label = init.cluster;
+    relabel_by_first_face(label);
+  }
+}
+
+// The strip clusterings with k clusters. For a pair (a, b), the strips of
+// the first direction are merged into a groups, those of the second into b
+// groups, and each face is labelled by its pair of groups; then the labels
+// are brought to k. b = 1 gives whole strips (the rings of a tube); on a
+// bent tube (a shell) the rings hold different shapes on their inner and
+// outer sides, and a few groups of consecutive rings (a) times the
+// positions around (b) keep the bend while giving up some growth. The pairs
+// tried: b in {1, 2, 3, 4, 6, 8, 12, 16} with a = ceil(k / b), and the same
+// with the directions swapped. A direction with more than `max_strips`
+// strips (O(S^3) greedy merges) is left out.
 template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
 std::vector<std::vector<std::size_t> >
 strip_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, const std::vector<Quad>& quads,
                   const std::vector<Quad_descriptor>& descriptors, std::size_t k,
                   Orientation_policy policy, CGAL::Random& random, std::size_t max_strips = 400)
 {
+  const std::array<std::vector<std::size_t>, 2> strips = quad_strips(pm, fim);
+  std::array<std::size_t, 2> count;
+  for(int d = 0; d < 2; ++d)
+    count[d] = 1 + *std::max_element(strips[d].begin(), strips[d].end());
   std::vector<std::vector<std::size_t> > result;
-  for(std::vector<std::size_t>& label : quad_strips(pm, fim))
-  {
-    const std::size_t s = 1 + *std::max_element(label.begin(), label.end());
-    if(s > max_strips)
-      continue;
-    if(s > k)
-      merge_strips_to(k, pm, fim, vpm, quads, policy, label, s);
-    else if(s < k)
+  for(int first = 0; first < 2; ++first)
+    for(std::size_t b : {1, 2, 3, 4, 6, 8, 12, 16})
     {
-      Initial_clustering init;
-      init.cluster = label;
-      init.orientation.assign(label.size(), Quad_orientation());
-      init.leaders.assign(s, no_index());
-      for(std::size_t f = label.size(); f-- > 0;)
-        init.leaders[label[f]] = f;
-      split_to(k, quads, descriptors, policy, random, init);
-      label = init.cluster;
-      relabel_by_first_face(label);
+      const std::size_t a = (k + b - 1) / b;
+      const std::size_t groups[2] = {first == 0 ? a : b, first == 0 ? b : a};
+      if(groups[0] > count[0] || groups[1] > count[1] ||
+         (groups[0] > 1 && count[0] > max_strips) || (groups[1] > 1 && count[1] > max_strips))
+        continue;
+      std::array<std::vector<std::size_t>, 2> grouped;
+      for(int d = 0; d < 2; ++d)
+      {
+        grouped[d] = groups[d] == 1 ? std::vector<std::size_t>(strips[d].size(), 0) : strips[d];
+        if(groups[d] > 1)
+          merge_strips_to(groups[d], pm, fim, vpm, quads, policy, grouped[d], count[d]);
+      }
+      std::vector<std::size_t> label(strips[0].size());
+      for(std::size_t f = 0; f < label.size(); ++f)
+        label[f] = grouped[0][f] * groups[1] + grouped[1][f];
+      const std::size_t s = relabel_by_first_face(label);
+      bring_to(k, pm, fim, vpm, quads, descriptors, policy, random, label, s);
+      if(std::find(result.begin(), result.end(), label) == result.end())
+        result.push_back(label);
     }
-    if(std::find(result.begin(), result.end(), label) == result.end())
-      result.push_back(label);
-  }
   return result;
 }
 

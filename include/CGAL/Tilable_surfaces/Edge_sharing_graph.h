@@ -13,7 +13,9 @@
 #include <CGAL/Tilable_surfaces/named_parameters.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 
+#include <CGAL/Kernel/global_functions.h>
 #include <CGAL/boost/graph/helpers.h>
+#include <CGAL/number_utils.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <boost/graph/graph_traits.hpp>

@@ -12,7 +12,9 @@
 #include <CGAL/Tilable_surfaces/internal/Clustering/kmeans.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/s_quad_template.h>
 
+#include <CGAL/Kernel/global_functions.h>
 #include <CGAL/Random.h>
+#include <CGAL/number_utils.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <boost/property_map/property_map.hpp>

@@ -13,9 +13,7 @@
 #include <CGAL/Tilable_surfaces/named_parameters.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 
-#include <CGAL/Kernel/global_functions.h>
 #include <CGAL/boost/graph/helpers.h>
-#include <CGAL/number_utils.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <boost/graph/graph_traits.hpp>
@@ -23,6 +21,7 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <array>
+#include <cmath>
 #include <cstddef>
 #include <limits>
 #include <memory>
@@ -32,6 +31,19 @@
 
 namespace CGAL {
 namespace Tilable_surfaces {
+namespace internal {
+
+// The distance between two points of any kernel, in double precision.
+template <typename Point>
+double distance(const Point& a, const Point& b)
+{
+  const double dx = CGAL::to_double(a.x()) - CGAL::to_double(b.x());
+  const double dy = CGAL::to_double(a.y()) - CGAL::to_double(b.y());
+  const double dz = CGAL::to_double(a.z()) - CGAL::to_double(b.z());
+  return std::sqrt(dx * dx + dy * dy + dz * dz);
+}
+
+} // namespace internal
 
 /// \ingroup PkgTilableSurfacesRef
 /// The edge-sharing graph of a clustering of the faces of a quad mesh.
@@ -141,8 +153,7 @@ public:
         if(edge_node == no_node())
         {
           edge_node = node;
-          m_lengths[find(node)].add(CGAL::to_double(
-            CGAL::approximate_sqrt(CGAL::squared_distance(get(vpm, source(h, pm)), get(vpm, target(h, pm))))));
+          m_lengths[find(node)].add(internal::distance(get(vpm, source(h, pm)), get(vpm, target(h, pm))));
         }
         else
           link(edge_node, node);

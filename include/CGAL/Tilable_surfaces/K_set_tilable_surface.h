@@ -491,8 +491,7 @@ private:
     {
       double sum = 0;
       for(auto v : CGAL::vertices_around_face(halfedge(f, m_mesh), m_mesh))
-        sum += CGAL::to_double(CGAL::approximate_sqrt(
-          CGAL::squared_distance(get(m_vpm, v), m_input_points[get(vim, v)])));
+        sum += internal::distance(get(m_vpm, v), m_input_points[get(vim, v)]);
       moved[std::size_t(m_cluster[get(m_fim, f)])] += sum;
       ++size[std::size_t(m_cluster[get(m_fim, f)])];
     }

@@ -12,9 +12,7 @@
 #include <CGAL/Tilable_surfaces/internal/Clustering/kmeans.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/s_quad_template.h>
 
-#include <CGAL/Kernel/global_functions.h>
 #include <CGAL/Random.h>
-#include <CGAL/number_utils.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <boost/property_map/property_map.hpp>
@@ -133,8 +131,7 @@ double total_length_deviation(const PolygonMesh& pm, VertexPointMap vpm)
   double count = 0, sum = 0, sum_of_squares = 0;
   for(auto e : edges(pm))
   {
-    const double l = CGAL::to_double(CGAL::approximate_sqrt(
-      CGAL::squared_distance(get(vpm, source(e, pm)), get(vpm, target(e, pm)))));
+    const double l = internal::distance(get(vpm, source(e, pm)), get(vpm, target(e, pm)));
     count += 1;
     sum += l;
     sum_of_squares += l * l;

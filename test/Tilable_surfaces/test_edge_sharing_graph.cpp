@@ -145,3 +145,27 @@ TEST(EdgeSharingGraph, RejectsBadLabels)
   Labelling o = label(m, [](int) { return 0; }, [](int) { return 8; });
   EXPECT_THROW(TS::Edge_sharing_graph<Mesh>(m, 1, o.cluster, o.orientation), TS::Invalid_input);
 }
+
+// Two faces side by side, 2 x 1 and 3 x 1 (vertices 2 and 5 moved from x = 4
+// to x = 5). In one cluster, the bottom edges (2 and 3) form one component and
+// the top edges another: each spreads 2 x 0.5^2 = 0.5 about its mean 2.5; the
+// three vertical edges (all 1) form the third. In two clusters nothing is
+// tied: 0, and merging them ties exactly what one cluster does.
+TEST(EdgeSharingGraph, LengthDeviationByHand)
+{
+  Mesh m = grid<Mesh>(2, 1, 2.0, 1.0);
+  m.point(Mesh::Vertex_index(2)) = Kernel::Point_3(5, 0, 0);
+  m.point(Mesh::Vertex_index(5)) = Kernel::Point_3(5, 1, 0);
+  Labelling one = label(m, [](int) { return 0; });
+  const TS::Edge_sharing_graph<Mesh> joined(m, 1, one.cluster, one.orientation);
+  EXPECT_EQ(joined.degree_of_flexibility(), 3u);
+  EXPECT_NEAR(joined.length_deviation(), 1.0, 1e-12);
+
+  Mesh m2 = m;
+  Labelling two = label(m2, [](int f) { return f; });
+  TS::Edge_sharing_graph<Mesh> apart(m2, 2, two.cluster, two.orientation);
+  EXPECT_NEAR(apart.length_deviation(), 0.0, 1e-12);
+  EXPECT_NEAR(apart.length_deviation_after_merge(0, 1, TS::Quad_orientation(0)), 1.0, 1e-12);
+  apart.merge_clusters(0, 1, TS::Quad_orientation(0));
+  EXPECT_NEAR(apart.length_deviation(), 1.0, 1e-12);
+}

@@ -17,6 +17,7 @@ else
             libgtest-dev nlohmann-json3-dev
             # optional, used when present: parallel loops and the CHOLMOD sparse solver
             libtbb-dev libsuitesparse-dev)
+  # scripts/fuzz.sh installs clang and libclang-rt-dev (libFuzzer) on top, when it is run.
 fi
 missing=()
 for p in "${packages[@]}"; do

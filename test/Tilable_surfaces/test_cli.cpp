@@ -8,6 +8,7 @@
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 
 #include "csv_cells.h"
+#include "temp_dir.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -51,15 +52,6 @@ Run_result run(const std::string& arguments)
   return Run_result{WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
 }
 
-// A fresh, empty directory per test.
-fs::path scratch(const std::string& name)
-{
-  const fs::path dir = fs::temp_directory_path() / ("k_set_tilable_test_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
 std::vector<std::vector<std::size_t> > face_lists(const Mesh& m)
 {
   std::vector<std::vector<std::size_t> > lists;
@@ -74,7 +66,7 @@ std::vector<std::vector<std::size_t> > face_lists(const Mesh& m)
 
 void check_run_on(const std::string& surface, int k, const std::string& catalog_ext)
 {
-  const fs::path dir = scratch(surface + std::to_string(k));
+  const Temp_dir dir("cli_" + std::to_string(k));
   const fs::path ply = dir / "out.ply", report_path = dir / "report.json",
                  catalog_path = dir / ("tiles." + catalog_ext);
   const Run_result r = run(data_dir + "/" + surface + " -k " + std::to_string(k) + " -o " + ply.string() +
@@ -181,7 +173,7 @@ TEST(CommandLine, HelpExitsZero)
 
 TEST(CommandLine, BadInputsExitWithCodeTwoAndWriteNothing)
 {
-  const fs::path dir = scratch("bad");
+  const Temp_dir dir("cli_bad");
   const std::string out = " -o " + (dir / "out.ply").string() + " --report " +
                           (dir / "r.json").string();
   const std::string saddle = data_dir + "/monkey_saddle.off";
@@ -197,4 +189,43 @@ TEST(CommandLine, BadInputsExitWithCodeTwoAndWriteNothing)
   expect_refused(dir, saddle + " -k 3 -o " + (dir / "out.stl").string(), ".ply, .off or .obj");
   expect_refused(dir, saddle + " -k 3 -o " + (dir / "no_such_dir" / "out.ply").string(),
                  "cannot create");
+}
+
+// The three files of issue 11 that were mishandled: a 28-byte OFF claiming
+// 1e9 vertices and faces, an OBJ with an unused vertex, coordinates of 1e300.
+TEST(CommandLine, HostileFilesAreRefusedOrReadAsTheyAre)
+{
+  const Temp_dir dir("cli_hostile");
+  const std::string out = " -o " + (dir / "out.ply").string();
+  std::ofstream(dir / "bomb.off") << "OFF\n1000000000 1000000000 0\n";
+  expect_refused(dir, (dir / "bomb.off").string() + " -k 1" + out, "more than the file");
+  std::ofstream huge(dir / "huge.off");
+  huge << "OFF\n6 2 0\n0 0 0\n1e300 0 0\n2e300 0 0\n0 1e300 0\n1e300 1e300 0\n2e300 1e300 0\n"
+       << "4 0 1 4 3\n4 1 2 5 4\n";
+  huge.close();
+  expect_refused(dir, (dir / "huge.off").string() + " -k 1" + out, "overflows");
+  fs::remove(dir / "huge.off");
+  fs::remove(dir / "bomb.off");
+
+  // A 3 x 2 grid of unit squares and, last, a vertex no face uses.
+  std::ofstream obj(dir / "cad.obj");
+  for(int j = 0; j <= 2; ++j)
+    for(int i = 0; i <= 3; ++i) obj << "v " << i << " " << j << " " << 0.1 * i * j << "\n";
+  obj << "v 1.5 0.5 7.25\n";
+  for(int j = 0; j < 2; ++j)
+    for(int i = 0; i < 3; ++i)
+    {
+      const int a = 1 + i + 4 * j;
+      obj << "f " << a << " " << a + 1 << " " << a + 5 << " " << a + 4 << "\n";
+    }
+  obj.close();
+  const Run_result r = run((dir / "cad.obj").string() + " -k 2 -q" + out);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("1 vertices are used by no face (the first is vertex 12)"), std::string::npos)
+    << r.output;
+  Mesh result;
+  std::ifstream ply_in(dir / "out.ply", std::ios::binary);
+  ASSERT_TRUE(CGAL::IO::read_PLY(ply_in, result));
+  ASSERT_EQ(result.number_of_vertices(), 13u);
+  EXPECT_EQ(result.point(Mesh::Vertex_index(12)), Mesh::Point(1.5, 0.5, 7.25)) << "not moved";
 }

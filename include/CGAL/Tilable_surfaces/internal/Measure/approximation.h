@@ -8,7 +8,7 @@
 // CGAL's AABB tree. A quad is the fan of 4 triangles around its vertex
 // centroid: no diagonal is preferred, and the centroid lies on the bilinear
 // patch of the quad. The result, as the same kind of surface, is sampled at
-// its vertices and, on each face, at the apex of the fan, the midpoints of
+// the vertices of its faces and, on each face, at the apex of the fan, the midpoints of
 // the 4 edges and the centroids of the 4 fan triangles; so a surface
 // measured against itself is at distance 0.
 
@@ -62,8 +62,13 @@ inline Distance_summary distance_to_input(const Tilable_problem& problem, const 
     s.mean += d;
     ++count;
   };
+  // The vertices of the faces: an isolated vertex is no part of the surface.
+  std::vector<bool> on_surface(std::size_t(result.rows()), false);
+  for(const auto& corners : problem.face_corners)
+    for(int v : corners) on_surface[std::size_t(v)] = true;
   for(Eigen::Index v = 0; v < result.rows(); ++v)
-    sample(result.row(v).transpose());
+    if(on_surface[std::size_t(v)])
+      sample(result.row(v).transpose());
   for(std::size_t f = 0; f < problem.face_corners.size(); ++f)
   {
     const Quad q = instance(problem, result, f);

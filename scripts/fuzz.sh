@@ -19,7 +19,8 @@ CC=clang CXX=clang++ cmake -S . -B build-fuzz -DCMAKE_BUILD_TYPE=Fuzz \
 nice -n 15 cmake --build build-fuzz -j 2 --target fuzz_read_and_tile
 mkdir -p build-fuzz/corpus build-fuzz/seeds build-fuzz/artifacts
 cp test/Tilable_surfaces/data/*.off test/Tilable_surfaces/data/*.obj \
-   examples/Tilable_surfaces/data/*.off fuzz/Tilable_surfaces/regressions/*_* build-fuzz/seeds/
+   fuzz/Tilable_surfaces/regressions/*_* build-fuzz/seeds/
+cp -n examples/Tilable_surfaces/data/*.off build-fuzz/seeds/  # mostly the same files
 # Small seeds of every format: a 2 x 2 grid in OFF, OBJ, ASCII and binary PLY.
 printf 'OFF\n9 4 0\n0 0 0\n1 0 0\n2 0 0\n0 1 0\n1 1 .2\n2 1 0\n0 2 0\n1 2 0\n2 2 .1\n4 0 1 4 3\n4 1 2 5 4\n4 3 4 7 6\n4 4 5 8 7\n' \
   > build-fuzz/seeds/grid.off

@@ -180,7 +180,7 @@ TEST(CommandLine, BadInputsExitWithCodeTwoAndWriteNothing)
   std::ofstream(dir / "garbage.off") << "OFF\n3 1 0\n0 0 zero\n1 0 0\nnonsense\n";
 
   expect_refused(dir, (dir / "missing.off").string() + " -k 3" + out, "no such file");
-  expect_refused(dir, (dir / "garbage.off").string() + " -k 3" + out, "not a readable polygon mesh");
+  expect_refused(dir, (dir / "garbage.off").string() + " -k 3" + out, "has 'zero', not a number");
   expect_refused(dir, data_dir + "/mushroom.off -k 3" + out, "only quad meshes");
   expect_refused(dir, saddle + " -k 0" + out, "-k must be at least 1");
   expect_refused(dir, saddle + " -k 101" + out, "more than the 100 faces");

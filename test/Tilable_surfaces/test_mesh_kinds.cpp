@@ -1,6 +1,7 @@
 // End to end on every kind of mesh: a closed surface, CGAL::Polyhedron_3, a
 // Surface_mesh with removed elements not yet collected, and a kernel with
 // exact predicates. Each result is checked for congruence independently.
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Polyhedron_items_with_id_3.h>
@@ -112,6 +113,20 @@ TEST(MeshKinds, ExactPredicatesInexactConstructionsKernel)
     EXPECT_EQ(mesh.point(w).x(), plain.point(*v).x());
     ++v;
   }
+}
+
+// Exact constructions work too: coordinates are read with to_double() and the
+// moved points written back as points made from doubles.
+TEST(MeshKinds, ExactPredicatesExactConstructionsKernel)
+{
+  typedef CGAL::Exact_predicates_exact_constructions_kernel Epeck;
+  typedef CGAL::Surface_mesh<Epeck::Point_3> Mesh;
+  Mesh mesh = read<Mesh>("monkey_saddle.off");
+  const TS::K_set_tilable_result r = tile_and_check(mesh, 30);
+  typedef CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> Plain;
+  Plain plain = read<Plain>("monkey_saddle.off");
+  const TS::K_set_tilable_result p = tile_and_check(plain, 30);
+  EXPECT_EQ(r.optimization.measure.congruence_error, p.optimization.measure.congruence_error);
 }
 
 TEST(MeshKinds, SurfaceMeshWithRemovedElementsIsRefusedUntilCollected)

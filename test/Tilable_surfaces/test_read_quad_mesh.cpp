@@ -125,6 +125,13 @@ TEST(ReadQuadMesh, RefusesCountsTheFileCannotHoldWithoutAllocating)
   list.append(reinterpret_cast<const char*>(&huge), 4);
   list += std::string(12, '\0');
   EXPECT_TRUE(contains(refusal(write(dir, "list.ply", list)), "claims a list of 1073741824"));
+  std::string negative = binary_ply_header("int", 1) + std::string(36, '\0');
+  const std::int32_t minus_one = -1;
+  negative.append(reinterpret_cast<const char*>(&minus_one), 4);
+  EXPECT_TRUE(contains(refusal(write(dir, "negative.ply", negative)), "list of negative length"));
+  // The fuzzer's first find: a keyword glued to the counts by a control
+  // character, which CGAL's reader took for 2e8 vertices.
+  EXPECT_TRUE(contains(refusal(write(dir, "glued.off", "OFF\x11" "200000000 0 0\n")), "not an ASCII OFF"));
   const double seconds =
     std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   EXPECT_LT(seconds, 5.0) << "refused at once";

@@ -207,8 +207,9 @@ std::size_t number_of_isolated_vertices(const PolygonMesh& pm)
 /// |(v2 - v0) x (v3 - v1)| / 2 larger than 1e-12 times the squared diagonal
 /// (a face collapsed to a point or a segment has vector area 0).
 ///
-/// A `CGAL::Polyhedron_3` must have items with ids
-/// (`CGAL::Polyhedron_items_with_id_3`); without, a `static_assert` says so.
+/// (The other entry points need edge indices: there, a `CGAL::Polyhedron_3`
+/// must have items with ids, `CGAL::Polyhedron_items_with_id_3`, and a
+/// `static_assert` says so otherwise.)
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{vertex_point_map} the points of the vertices \cgalParamNEnd
@@ -222,7 +223,6 @@ template <typename PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 void validate_quad_mesh(const PolygonMesh& pm,
                         const CGAL_NP_CLASS& np = parameters::default_values())
 {
-  CGAL_TILABLE_SURFACES_ASSERT_EDGE_INDICES(PolygonMesh);
   using parameters::choose_parameter;
   using parameters::get_parameter;
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
@@ -238,12 +238,17 @@ void validate_quad_mesh(const PolygonMesh& pm,
   // of num_vertices() and num_faces() elements out of bounds.
   const auto vim = CGAL::get_initialized_vertex_index_map(pm, np);
   const auto fim = CGAL::get_initialized_face_index_map(pm, np);
-  // Where the mesh keeps halfedge ids (Polyhedron_items_with_id_3), they give
-  // the edge indices: this numbers them if they are not numbered yet.
-  CGAL::get_initialized_halfedge_index_map(pm);
-  if(!internal::is_compact_index_map(vertices(pm), vim, num_vertices(pm)) ||
-     !internal::is_compact_index_map(faces(pm), fim, num_faces(pm)) ||
-     !internal::is_compact_index_map(edges(pm), CGAL::get_initialized_edge_index_map(pm), num_edges(pm)))
+  bool compact = internal::is_compact_index_map(vertices(pm), vim, num_vertices(pm)) &&
+                 internal::is_compact_index_map(faces(pm), fim, num_faces(pm));
+  if constexpr(internal::Has_edge_indices<PolygonMesh>::value)
+  {
+    // Where the mesh keeps halfedge ids (Polyhedron_items_with_id_3), they
+    // give the edge indices: this numbers them if they are not numbered yet.
+    CGAL::get_initialized_halfedge_index_map(pm);
+    compact = compact && internal::is_compact_index_map(
+                           edges(pm), CGAL::get_initialized_edge_index_map(pm), num_edges(pm));
+  }
+  if(!compact)
     throw Invalid_input("the vertex, edge or face indices are not 0..n-1 (a Surface_mesh with removed "
                         "elements must be garbage-collected first: collect_garbage())");
 

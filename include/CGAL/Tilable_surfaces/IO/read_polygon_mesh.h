@@ -14,7 +14,6 @@
 #include <CGAL/Tilable_surfaces/validation.h>
 
 #include <CGAL/IO/OBJ.h>
-#include <CGAL/IO/OFF.h>
 #include <CGAL/IO/PLY.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Simple_cartesian.h>
@@ -25,6 +24,7 @@
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <fstream>
 #include <istream>
 #include <limits>
@@ -81,48 +81,78 @@ inline std::size_t parse_count(const std::string& token, std::size_t limit, std:
   return std::size_t(value);
 }
 
-// OFF: the header counts, then the face lines' vertex counts (CGAL's reader
-// allocates both before reading what they count). Each vertex needs at least
-// 6 bytes ("0 0 0\n"), each face 4 ("1 0\n"), each face corner 2.
-inline void check_OFF_counts(std::istream& in, std::size_t size)
+// Parses a whole token as a double, or throws saying what it was for.
+inline double parse_coordinate(const std::string& token, const std::string& what)
+{
+  char* end = nullptr;
+  const double x = std::strtod(token.c_str(), &end);
+  if(token.empty() || end != token.c_str() + token.size())
+    throw File_error(what + " has '" + token + "', not a number");
+  return x;
+}
+
+// ASCII OFF, read here rather than by CGAL's reader so that every count is
+// checked before it sizes anything: the keyword ([ST][C][N]OFF; colours,
+// normals and texture coordinates after the coordinates are ignored), the
+// vertex, face and edge counts, then one line per vertex and per face. Each
+// vertex needs at least 6 bytes ("0 0 0\n"), each face 4 ("1 0\n"), each
+// face corner 2.
+template <typename Point>
+void read_OFF_soup(std::istream& in, std::size_t size, std::vector<Point>& points,
+                   std::vector<std::vector<std::size_t> >& polygons)
 {
   std::string line;
   std::vector<std::string> header;
   while(header.size() < 4 && std::getline(in, line))
     for(const std::string& t : line_tokens(line)) header.push_back(t);
-  if(header.empty() || header[0].find("OFF") == std::string::npos)
-    throw File_error("not an OFF file: it does not start with OFF");
-  std::size_t first = 1;
-  if(header[0].find('n') != std::string::npos)  // nOFF: the dimension comes first
-    ++first;
-  if(header.size() > first && header[first] == "BINARY")
+  const std::string keyword = header.empty() ? std::string() : header[0];
+  const std::size_t off = keyword.rfind("OFF");
+  const std::string prefix = off == std::string::npos ? keyword : keyword.substr(0, off);
+  if(off == std::string::npos || off + 3 != keyword.size() ||
+     prefix.find_first_not_of("STCN") != std::string::npos)
+    throw File_error(keyword.find("OFF") != std::string::npos && keyword.find_first_of("4n") < off
+                       ? "the OFF variant '" + keyword + "' (4D or n-dimensional) is not supported"
+                       : "not an ASCII OFF file: it does not start with [ST][C][N]OFF");
+  if(header.size() > 1 && header[1] == "BINARY")
     throw File_error("binary OFF is not supported; use PLY or ASCII OFF");
-  while(header.size() < first + 3 && std::getline(in, line))
-    for(const std::string& t : line_tokens(line)) header.push_back(t);
-  if(header.size() < first + 2)
-    throw File_error("the OFF header has no vertex and face counts");
-  const std::size_t nv = parse_count(header[first], size / 6, size, "the OFF vertex count");
-  const std::size_t nf = parse_count(header[first + 1], size / 4, size, "the OFF face count");
+  if(header.size() != 4)
+    throw File_error("the OFF header must give 3 counts (vertices, faces, edges), alone on their line");
+  const std::size_t nv = parse_count(header[1], size / 6, size, "the OFF vertex count");
+  const std::size_t nf = parse_count(header[2], size / 4, size, "the OFF face count");
   if(nv * 6 + nf * 4 > size)
     throw File_error("the OFF header claims " + std::to_string(nv) + " vertices and " +
-                        std::to_string(nf) + " faces, more than the file of " +
-                        std::to_string(size) + " bytes can hold");
-  // The header's line may go on with the first vertex when the counts sit
-  // on the keyword's line; CGAL reads lines, and so do we.
-  std::size_t data_lines = 0;
-  while(data_lines < nv + nf && std::getline(in, line))
+                     std::to_string(nf) + " faces, more than the file of " + std::to_string(size) +
+                     " bytes can hold");
+  points.reserve(nv);
+  polygons.reserve(nf);
+  while(points.size() + polygons.size() < nv + nf && std::getline(in, line))
   {
     const std::vector<std::string> tokens = line_tokens(line);
     if(tokens.empty())
       continue;
-    if(data_lines++ < nv)
+    if(points.size() < nv)
+    {
+      const std::string what = "OFF vertex " + std::to_string(points.size());
+      if(tokens.size() < 3)
+        throw File_error(what + " has fewer than 3 coordinates");
+      points.emplace_back(parse_coordinate(tokens[0], what), parse_coordinate(tokens[1], what),
+                          parse_coordinate(tokens[2], what));
       continue;
-    const std::size_t corners = parse_count(tokens[0], size / 2, size, "the vertex count of OFF face " +
-                                            std::to_string(data_lines - nv - 1));
+    }
+    const std::string what = "OFF face " + std::to_string(polygons.size());
+    const std::size_t corners = parse_count(tokens[0], size / 2, size, "the vertex count of " + what);
     if(corners + 1 > tokens.size())
-      throw File_error("OFF face " + std::to_string(data_lines - nv - 1) + " claims " +
-                          tokens[0] + " vertices but lists " + std::to_string(tokens.size() - 1));
+      throw File_error(what + " claims " + tokens[0] + " vertices but lists " +
+                       std::to_string(tokens.size() - 1));
+    polygons.emplace_back();
+    for(std::size_t j = 1; j <= corners; ++j)
+      polygons.back().push_back(
+        parse_count(tokens[j], (std::numeric_limits<std::size_t>::max)(), size, "a vertex of " + what));
   }
+  if(points.size() < nv || polygons.size() < nf)
+    throw File_error("the OFF file is truncated: it declares " + std::to_string(nv) + " vertices and " +
+                     std::to_string(nf) + " faces but holds " + std::to_string(points.size()) +
+                     " and " + std::to_string(polygons.size()));
 }
 
 // PLY: each element count times the fewest bytes one element takes, and each
@@ -190,20 +220,21 @@ inline void check_PLY_counts(std::istream& in, std::size_t size)
 
   // Lists: the length read before the values must fit in what is left.
   const bool little = (format == "binary_little_endian");
+  const long double unreadable = std::numeric_limits<long double>::quiet_NaN();
   auto read_count = [&](const Property& p) -> long double {
     if(ascii)
     {
       std::string token;
-      if(!(in >> token)) return -1;
-      try { return std::stold(token); } catch(const std::exception&) { return -1; }
+      if(!(in >> token)) return unreadable;
+      try { return std::stold(token); } catch(const std::exception&) { return unreadable; }
     }
     unsigned char b[8] = {0};
-    if(!in.read(reinterpret_cast<char*>(b), p.count_bytes)) return -1;
+    if(!in.read(reinterpret_cast<char*>(b), p.count_bytes)) return unreadable;
     std::uint64_t u = 0;
     for(int i = 0; i < p.count_bytes; ++i)
       u |= std::uint64_t(b[little ? i : p.count_bytes - 1 - i]) << (8 * i);
     const bool is_signed = p.count_type[0] != 'u';
-    if(is_signed && (u >> (8 * p.count_bytes - 1)) & 1u) return -1;
+    if(is_signed && (u >> (8 * p.count_bytes - 1)) & 1u) return -1;  // negative
     return static_cast<long double>(u);
   };
   for(const Element& e : elements)
@@ -219,8 +250,11 @@ inline void check_PLY_counts(std::istream& in, std::size_t size)
         }
         const long double n = read_count(p);
         const std::streamoff here = in.tellg();
-        if(n < 0 || here < 0)
-          return;
+        if(std::isnan(n) || here < 0)
+          return;  // unreadable or truncated: CGAL's reader fails on it too
+        if(n < 0)  // CGAL's reader would take it for a huge unsigned length
+          throw File_error("a PLY " + e.name + " (number " + std::to_string(i) +
+                           ") has a list of negative length");
         const std::size_t left = size - (std::min)(size, std::size_t(here));
         if(n * (ascii ? 2 : p.value_bytes) > static_cast<long double>(left))
           throw File_error("a PLY " + e.name + " (number " + std::to_string(i) + ") claims a list of " +
@@ -246,7 +280,8 @@ inline std::string lower_extension(const std::string& path)
 } // namespace internal
 
 /// \ingroup PkgTilableSurfacesRef
-/// Reads a polygon mesh in the format `format` ("off" for ASCII OFF, "obj",
+/// Reads a polygon mesh in the format `format` ("off" for ASCII OFF, read by
+/// the package itself; "obj",
 /// or "ply" for ASCII or binary PLY) from `in`, which must be seekable (a
 /// file opened in binary mode, or a string stream), into `pm` (cleared first).
 /// `name` names the source in the messages.
@@ -282,9 +317,11 @@ Read_report read_quad_mesh(std::istream& in, const std::string& format, PolygonM
   const std::streamoff end = in.tellg();
   in.seekg(0, std::ios::beg);
   const std::size_t size = end > 0 ? std::size_t(end) : 0;
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t> > polygons;
   try
   {
-    if(format == "off") internal::check_OFF_counts(in, size);
+    if(format == "off") internal::read_OFF_soup(in, size, points, polygons);
     if(format == "ply") internal::check_PLY_counts(in, size);
   }
   catch(const internal::File_error& e)
@@ -294,10 +331,8 @@ Read_report read_quad_mesh(std::istream& in, const std::string& format, PolygonM
   in.clear();
   in.seekg(0, std::ios::beg);
 
-  std::vector<Point> points;
-  std::vector<std::vector<std::size_t> > polygons;
   const auto quiet = CGAL::parameters::verbose(false);
-  const bool read = format == "off" ? CGAL::IO::read_OFF(in, points, polygons, quiet)
+  const bool read = format == "off" ? true  // read above
                   : format == "obj" ? CGAL::IO::read_OBJ(in, points, polygons, quiet)
                                     : CGAL::IO::read_PLY(in, points, polygons, quiet);
   if(!read)

@@ -1,8 +1,8 @@
 #!/usr/bin/env bash
 # Builds everything with AddressSanitizer and UndefinedBehaviorSanitizer
 # (-O1 -g, assertions on, any report is fatal) in build-sanitize/ and runs the
-# whole ctest suite there, except the tests labelled `slow_under_sanitizers`
-# (see test/Tilable_surfaces/CMakeLists.txt). Exit code 0 = no report.
+# whole ctest suite there, except tests given the ctest label
+# `slow_under_sanitizers` (none is, so far). Exit code 0 = no report.
 #   bash scripts/sanitize.sh [ctest arguments]
 set -euo pipefail
 cd "$(dirname "$0")/.."

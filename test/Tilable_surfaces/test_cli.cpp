@@ -195,20 +195,18 @@ TEST(CommandLine, BadInputsExitWithCodeTwoAndWriteNothing)
 // 1e9 vertices and faces, an OBJ with an unused vertex, coordinates of 1e300.
 TEST(CommandLine, HostileFilesAreRefusedOrReadAsTheyAre)
 {
-  const Temp_dir dir("cli_hostile");
+  const Temp_dir dir("cli_hostile"), inputs("cli_hostile_inputs");  // outputs, inputs
   const std::string out = " -o " + (dir / "out.ply").string();
-  std::ofstream(dir / "bomb.off") << "OFF\n1000000000 1000000000 0\n";
-  expect_refused(dir, (dir / "bomb.off").string() + " -k 1" + out, "more than the file");
-  std::ofstream huge(dir / "huge.off");
+  std::ofstream(inputs / "bomb.off") << "OFF\n1000000000 1000000000 0\n";
+  expect_refused(dir, (inputs / "bomb.off").string() + " -k 1" + out, "more than the file");
+  std::ofstream huge(inputs / "huge.off");
   huge << "OFF\n6 2 0\n0 0 0\n1e300 0 0\n2e300 0 0\n0 1e300 0\n1e300 1e300 0\n2e300 1e300 0\n"
        << "4 0 1 4 3\n4 1 2 5 4\n";
   huge.close();
-  expect_refused(dir, (dir / "huge.off").string() + " -k 1" + out, "overflows");
-  fs::remove(dir / "huge.off");
-  fs::remove(dir / "bomb.off");
+  expect_refused(dir, (inputs / "huge.off").string() + " -k 1" + out, "overflows");
 
   // A 3 x 2 grid of unit squares and, last, a vertex no face uses.
-  std::ofstream obj(dir / "cad.obj");
+  std::ofstream obj(inputs / "cad.obj");
   for(int j = 0; j <= 2; ++j)
     for(int i = 0; i <= 3; ++i) obj << "v " << i << " " << j << " " << 0.1 * i * j << "\n";
   obj << "v 1.5 0.5 7.25\n";
@@ -219,7 +217,7 @@ TEST(CommandLine, HostileFilesAreRefusedOrReadAsTheyAre)
       obj << "f " << a << " " << a + 1 << " " << a + 5 << " " << a + 4 << "\n";
     }
   obj.close();
-  const Run_result r = run((dir / "cad.obj").string() + " -k 2 -q" + out);
+  const Run_result r = run((inputs / "cad.obj").string() + " -k 2 -q" + out);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("1 vertices are used by no face (the first is vertex 12)"), std::string::npos)
     << r.output;

@@ -19,6 +19,7 @@ else
             libtbb-dev libsuitesparse-dev
             # optional, used when present: the Python module tilable_surfaces (build/python/)
             pybind11-dev python3-dev python3-numpy)
+  # scripts/fuzz.sh installs clang and libclang-rt-dev (libFuzzer) on top, when it is run.
 fi
 missing=()
 for p in "${packages[@]}"; do

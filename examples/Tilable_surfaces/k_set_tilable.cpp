@@ -15,6 +15,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
+#include <CGAL/Tilable_surfaces/IO/read_polygon_mesh.h>
 #include <CGAL/Tilable_surfaces/IO/report.h>
 #include <CGAL/Tilable_surfaces/IO/tile_catalog.h>
 #include <CGAL/Tilable_surfaces/IO/write_OBJ.h>
@@ -168,15 +169,17 @@ Options parse(int argc, char** argv, bool& help)
 
 Mesh read_input(const std::string& path)
 {
-  if(!std::ifstream(path))
-    throw Usage_error("cannot open '" + path + "': no such file or not readable");
-  const std::string ext = extension(path);
-  if(ext != "off" && ext != "obj" && ext != "ply")
-    throw Usage_error("'" + path + "' is not an OFF, OBJ or PLY file");
   Mesh mesh;
-  if(!CGAL::IO::read_polygon_mesh(path, mesh, CGAL::parameters::verbose(false)) || mesh.is_empty())
-    throw Usage_error("'" + path + "' is not a readable polygon mesh "
-                      "(corrupt file, or a non-manifold or inconsistently oriented surface)");
+  try
+  {
+    // Counts checked against the file size, unused vertices kept.
+    for(const std::string& w : TS::IO::read_quad_mesh(path, mesh).warnings)
+      std::cerr << "[k_set_tilable] warning: " << path << ": " << w << "\n";
+  }
+  catch(const TS::Invalid_input& e)
+  {
+    throw Usage_error(e.what());
+  }
   return mesh;
 }
 

@@ -9,6 +9,7 @@
 
 #include "csv_cells.h"
 #include "obj_file.h"
+#include "temp_dir.h"
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
@@ -52,15 +53,6 @@ Run_result run(const std::string& arguments)
   return Run_result{WIFEXITED(status) ? WEXITSTATUS(status) : -1, output};
 }
 
-// A fresh, empty directory per test.
-fs::path scratch(const std::string& name)
-{
-  const fs::path dir = fs::temp_directory_path() / ("k_set_tilable_test_" + name);
-  fs::remove_all(dir);
-  fs::create_directories(dir);
-  return dir;
-}
-
 std::vector<std::vector<std::size_t> > face_lists(const Mesh& m)
 {
   std::vector<std::vector<std::size_t> > lists;
@@ -75,7 +67,7 @@ std::vector<std::vector<std::size_t> > face_lists(const Mesh& m)
 
 void check_run_on(const std::string& surface, int k, const std::string& catalog_ext)
 {
-  const fs::path dir = scratch(surface + std::to_string(k));
+  const Temp_dir dir("cli_" + std::to_string(k));
   const fs::path ply = dir / "out.ply", report_path = dir / "report.json",
                  catalog_path = dir / ("tiles." + catalog_ext);
   const Run_result r = run(data_dir + "/" + surface + " -k " + std::to_string(k) + " -o " + ply.string() +
@@ -218,14 +210,14 @@ TEST(CommandLine, HelpExitsZero)
 
 TEST(CommandLine, BadInputsExitWithCodeTwoAndWriteNothing)
 {
-  const fs::path dir = scratch("bad");
+  const Temp_dir dir("cli_bad");
   const std::string out = " -o " + (dir / "out.ply").string() + " --report " +
                           (dir / "r.json").string();
   const std::string saddle = data_dir + "/monkey_saddle.off";
   std::ofstream(dir / "garbage.off") << "OFF\n3 1 0\n0 0 zero\n1 0 0\nnonsense\n";
 
   expect_refused(dir, (dir / "missing.off").string() + " -k 3" + out, "no such file");
-  expect_refused(dir, (dir / "garbage.off").string() + " -k 3" + out, "not a readable polygon mesh");
+  expect_refused(dir, (dir / "garbage.off").string() + " -k 3" + out, "has 'zero', not a number");
   expect_refused(dir, data_dir + "/mushroom.off -k 3" + out, "only quad meshes");
   expect_refused(dir, saddle + " -k 0" + out, "-k must be at least 1");
   expect_refused(dir, saddle + " -k 101" + out, "more than the 100 faces");
@@ -234,4 +226,41 @@ TEST(CommandLine, BadInputsExitWithCodeTwoAndWriteNothing)
   expect_refused(dir, saddle + " -k 3 -o " + (dir / "out.stl").string(), ".ply, .off or .obj");
   expect_refused(dir, saddle + " -k 3 -o " + (dir / "no_such_dir" / "out.ply").string(),
                  "cannot create");
+}
+
+// The three files of issue 11 that were mishandled: a 28-byte OFF claiming
+// 1e9 vertices and faces, an OBJ with an unused vertex, coordinates of 1e300.
+TEST(CommandLine, HostileFilesAreRefusedOrReadAsTheyAre)
+{
+  const Temp_dir dir("cli_hostile"), inputs("cli_hostile_inputs");  // outputs, inputs
+  const std::string out = " -o " + (dir / "out.ply").string();
+  std::ofstream(inputs / "bomb.off") << "OFF\n1000000000 1000000000 0\n";
+  expect_refused(dir, (inputs / "bomb.off").string() + " -k 1" + out, "more than the file");
+  std::ofstream huge(inputs / "huge.off");
+  huge << "OFF\n6 2 0\n0 0 0\n1e300 0 0\n2e300 0 0\n0 1e300 0\n1e300 1e300 0\n2e300 1e300 0\n"
+       << "4 0 1 4 3\n4 1 2 5 4\n";
+  huge.close();
+  expect_refused(dir, (inputs / "huge.off").string() + " -k 1" + out, "overflows");
+
+  // A 3 x 2 grid of unit squares and, last, a vertex no face uses.
+  std::ofstream obj(inputs / "cad.obj");
+  for(int j = 0; j <= 2; ++j)
+    for(int i = 0; i <= 3; ++i) obj << "v " << i << " " << j << " " << 0.1 * i * j << "\n";
+  obj << "v 1.5 0.5 7.25\n";
+  for(int j = 0; j < 2; ++j)
+    for(int i = 0; i < 3; ++i)
+    {
+      const int a = 1 + i + 4 * j;
+      obj << "f " << a << " " << a + 1 << " " << a + 5 << " " << a + 4 << "\n";
+    }
+  obj.close();
+  const Run_result r = run((inputs / "cad.obj").string() + " -k 2 -q" + out);
+  ASSERT_EQ(r.exit_code, 0) << r.output;
+  EXPECT_NE(r.output.find("1 vertices are used by no face (the first is vertex 12)"), std::string::npos)
+    << r.output;
+  Mesh result;
+  std::ifstream ply_in(dir / "out.ply", std::ios::binary);
+  ASSERT_TRUE(CGAL::IO::read_PLY(ply_in, result));
+  ASSERT_EQ(result.number_of_vertices(), 13u);
+  EXPECT_EQ(result.point(Mesh::Vertex_index(12)), Mesh::Point(1.5, 0.5, 7.25)) << "not moved";
 }

@@ -5,9 +5,9 @@
 
 #include <CGAL/Tilable_surfaces/make_k_set_tilable.h>
 
-#include <gtest/gtest.h>
+#include "congruence_check.h"
 
-#include <Eigen/Geometry>
+#include <gtest/gtest.h>
 
 #include <set>
 #include <string>
@@ -29,28 +29,6 @@ Mesh read(const std::string& name)
 std::vector<Mesh::Point> points(const Mesh& m)
 {
   return std::vector<Mesh::Point>(m.points().begin(), m.points().end());
-}
-
-// Congruence measured here, independently of the package's measurement: for
-// each cluster, Eigen::umeyama (no scaling) of every instance onto the first
-// one; the largest corner deviation over the mean edge length.
-template <typename ClusterMap, typename OrientationMap>
-double congruence_by_umeyama(const Mesh& m, ClusterMap cluster, OrientationMap orientation)
-{
-  std::map<int, Eigen::Matrix<double, 3, 4> > first;
-  double worst = 0;
-  for(auto f : faces(m))
-  {
-    const TS::Quad q = TS::face_quad(f, m, TS::Quad_orientation(int(get(orientation, f))));
-    Eigen::Matrix<double, 3, 4> x;
-    for(int i = 0; i < 4; ++i) x.col(i) = q[i];
-    const auto it = first.emplace(int(get(cluster, f)), x).first;
-    const Eigen::Matrix4d T = Eigen::umeyama(it->second, x, false);
-    const Eigen::Matrix<double, 3, 4> fitted =
-      (T.topLeftCorner<3, 3>() * it->second).colwise() + T.topRightCorner<3, 1>();
-    worst = (std::max)(worst, (fitted - x).colwise().norm().maxCoeff());
-  }
-  return worst / TS::mean_edge_length(m);
 }
 
 } // namespace

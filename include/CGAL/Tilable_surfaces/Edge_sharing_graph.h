@@ -12,6 +12,7 @@
 #include <CGAL/Tilable_surfaces/exceptions.h>
 #include <CGAL/Tilable_surfaces/named_parameters.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
+#include <CGAL/Tilable_surfaces/validation.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -43,6 +44,12 @@ double distance(const Point& a, const Point& b)
   return std::sqrt(dx * dx + dy * dy + dz * dz);
 }
 
+// Tag: the mesh passed with it was accepted by validate_quad_mesh().
+struct Validated_mesh
+{
+  explicit Validated_mesh(bool) {}
+};
+
 } // namespace internal
 
 /// \ingroup PkgTilableSurfacesRef
@@ -69,6 +76,7 @@ double distance(const Point& a, const Point& b)
 template <typename PolygonMesh>
 class Edge_sharing_graph
 {
+  CGAL_TILABLE_SURFACES_ASSERT_EDGE_INDICES(PolygonMesh);
   typedef boost::graph_traits<PolygonMesh> GT;
 
 public:
@@ -102,20 +110,31 @@ public:
   /// `face_orientation_map` (values 0..7, or `Quad_orientation`).
   ///
   /// \cgalNamedParamsBegin
-    ///   \cgalParamNBegin{face_index_map} indices of the faces, for messages \cgalParamNEnd
-  ///   \cgalParamNBegin{vertex_point_map} the points, for the edge lengths of
-  ///     `length_deviation()` \cgalParamNEnd
+  ///   \cgalParamNBegin{vertex_point_map} the points, checked by `validate_quad_mesh()` and used for
+  ///     the edge lengths of `length_deviation()` \cgalParamNEnd
+  ///   \cgalParamNBegin{face_index_map} indices of the faces, for messages \cgalParamNEnd
   /// \cgalNamedParamsEnd
   /// Mesh edges are identified by the mesh's internal edge index
   /// (`CGAL::get_initialized_edge_index_map(pm)`); `pm` must not change
   /// while the graph is used.
-  /// \throws Invalid_input if a face is not a quad, or has a cluster out of
+  /// \throws Invalid_input if `pm` fails `validate_quad_mesh()` (with the
+  /// `vertex_point_map` of `np`, if any), or a face has a cluster out of
   /// 0..K-1 or an orientation out of 0..7.
   template <typename FaceClusterMap, typename FaceOrientationMap,
             typename CGAL_NP_TEMPLATE_PARAMETERS>
   Edge_sharing_graph(const PolygonMesh& pm, std::size_t number_of_clusters,
                      FaceClusterMap face_cluster_map, FaceOrientationMap face_orientation_map,
                      const CGAL_NP_CLASS& np = parameters::default_values())
+    : Edge_sharing_graph(internal::Validated_mesh(validated(pm, np)), pm, number_of_clusters,
+                         face_cluster_map, face_orientation_map, np)
+  {}
+
+  /// \cond SKIP_IN_MANUAL
+  // For the package's own use on a mesh `validate_quad_mesh()` accepted.
+  template <typename FaceClusterMap, typename FaceOrientationMap, typename NamedParameters>
+  Edge_sharing_graph(internal::Validated_mesh, const PolygonMesh& pm, std::size_t number_of_clusters,
+                     FaceClusterMap face_cluster_map, FaceOrientationMap face_orientation_map,
+                     const NamedParameters& np)
     : m_edge_index_map(CGAL::get_initialized_edge_index_map(pm))
   {
     const auto fim = CGAL::get_initialized_face_index_map(pm, np);
@@ -130,13 +149,7 @@ public:
       const std::size_t fi = get(fim, f);
       const long long c = static_cast<long long>(get(face_cluster_map, f));
       const int o = static_cast<int>(get(face_orientation_map, f));
-      if(c < 0 || std::size_t(c) >= number_of_clusters)
-        throw Invalid_input("face " + std::to_string(fi) + " has cluster " + std::to_string(c) +
-                            ", not in 0.." + std::to_string(number_of_clusters - 1),
-                            Invalid_input::FACE, fi);
-      if(o < 0 || o > 7)
-        throw Invalid_input("face " + std::to_string(fi) + " has orientation " +
-                            std::to_string(o) + ", not in 0..7", Invalid_input::FACE, fi);
+      internal::check_face_label(fi, c, o, number_of_clusters);
       if(CGAL::halfedges_around_face(halfedge(f, pm), pm).size() != 4)
         throw Invalid_input("face " + std::to_string(fi) + " is not a quad",
                             Invalid_input::FACE, fi);
@@ -161,6 +174,7 @@ public:
     }
     m_edge_node = std::make_shared<const std::vector<std::size_t> >(std::move(edge_nodes));
   }
+  /// \endcond
 
   /// The number of clusters K the graph was built for (merged clusters
   /// included: their ids stay reserved).
@@ -260,6 +274,13 @@ public:
   }
 
 private:
+  template <typename NamedParameters>
+  static bool validated(const PolygonMesh& pm, const NamedParameters& np)
+  {
+    validate_quad_mesh(pm, np);
+    return true;
+  }
+
   static std::size_t no_node() { return (std::numeric_limits<std::size_t>::max)(); }
 
   // Count, sum and sum of squares of the lengths of a component's mesh edges.

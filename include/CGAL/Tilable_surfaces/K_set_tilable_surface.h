@@ -163,10 +163,7 @@ public:
     std::vector<bool> used(k, false);
     for(std::size_t f = 0; f < cluster.size(); ++f)
     {
-      if(cluster[f] < 0 || orientation[f] < 0 || orientation[f] > 7)
-        throw Invalid_input("face " + std::to_string(f) + " has cluster " + std::to_string(cluster[f]) +
-                            " and orientation " + std::to_string(orientation[f]),
-                            Invalid_input::FACE, f);
+      internal::check_face_label(f, cluster[f], orientation[f], k);
       used[std::size_t(cluster[f])] = true;
     }
     for(std::size_t c = 0; c < k; ++c)
@@ -200,7 +197,8 @@ public:
   {
     require_clustering();
     return Edge_sharing_graph<PolygonMesh>(m_mesh, m_number_of_clusters, face_cluster_map(),
-                                           face_orientation_map(), parameters::face_index_map(m_fim));
+                                           face_orientation_map(),
+                                           parameters::vertex_point_map(m_vpm).face_index_map(m_fim));
   }
 
   /// Makes candidate `i` of the pool of the last `cluster()`

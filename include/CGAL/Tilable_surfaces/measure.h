@@ -58,9 +58,9 @@ struct Tilability_measure
   /// Largest distance from a sample of the result to the input surface,
   /// divided by `input_bbox_diagonal`. Every quad is taken as the fan of 4
   /// triangles around its vertex centroid (no preferred diagonal); the samples
-  /// are the vertices and, on each face, the fan's apex, the 4 edge midpoints
-  /// and the centroids of the 4 fan triangles. One-sided: it cannot see a
-  /// part of the input that the result no longer covers.
+  /// are the vertices of the faces and, on each face, the fan's apex, the 4 edge
+  /// midpoints and the centroids of the 4 fan triangles. One-sided: it cannot
+  /// see a part of the input that the result no longer covers.
   double max_approximation_error = 0;
   /// Mean of the same distances over all samples, divided likewise.
   double mean_approximation_error = 0;

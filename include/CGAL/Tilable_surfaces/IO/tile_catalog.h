@@ -10,14 +10,17 @@
 /// count and the worst deviation of an instance, all in the mesh's units.
 /// CSV, or JSON (with nlohmann::json, Debian's `nlohmann-json3-dev`).
 
+#include <CGAL/Tilable_surfaces/exceptions.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 
 #include <nlohmann/json.hpp>
 
+#include <cmath>
 #include <cstddef>
 #include <iomanip>
 #include <limits>
 #include <ostream>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -57,6 +60,19 @@ inline Tile_row tile_row(const Tile& t)
                   Tilable_surfaces::signed_volume(t.corners), planarity_defect(t.corners)};
 }
 
+// Refuses a catalog with a non-finite number, before anything is written.
+inline void check_tiles(const std::vector<Tile>& tiles)
+{
+  for(std::size_t i = 0; i < tiles.size(); ++i)
+  {
+    bool finite = std::isfinite(tiles[i].worst_deviation);
+    for(const Eigen::Vector3d& p : tiles[i].corners) finite = finite && p.allFinite();
+    if(!finite)
+      throw Invalid_input("tile " + std::to_string(i) + " (id " + std::to_string(tiles[i].id) +
+                          ") has a non-finite corner or deviation", Invalid_input::PARAMETER, i);
+  }
+}
+
 } // namespace internal
 
 /// \ingroup PkgTilableSurfacesRef
@@ -64,8 +80,11 @@ inline Tile_row tile_row(const Tile& t)
 /// corner coordinates `t0x ... t3z`, the edge lengths `e01, e12, e23, e30`,
 /// the diagonals `d02, d13`, `signed_volume`, `planarity` (distance of t3 to
 /// the plane of t0, t1, t2) and `worst_deviation`. Full double precision.
+/// \throws Invalid_input if a tile has a non-finite number; nothing is
+/// written then.
 inline bool write_tile_catalog_CSV(std::ostream& os, const std::vector<Tile>& tiles)
 {
+  internal::check_tiles(tiles);
   os << "id,instances,t0x,t0y,t0z,t1x,t1y,t1z,t2x,t2y,t2z,t3x,t3y,t3z,"
         "e01,e12,e23,e30,d02,d13,signed_volume,planarity,worst_deviation\n";
   os << std::setprecision(std::numeric_limits<double>::max_digits10);
@@ -86,8 +105,10 @@ inline bool write_tile_catalog_CSV(std::ostream& os, const std::vector<Tile>& ti
 /// The catalog as a JSON array, one object per tile with the fields of
 /// `write_tile_catalog_CSV()` (`corners` as 4 arrays of 3 numbers, `edges`
 /// and `diagonals` as arrays).
+/// \throws Invalid_input if a tile has a non-finite number.
 inline nlohmann::json tile_catalog_json(const std::vector<Tile>& tiles)
 {
+  internal::check_tiles(tiles);
   nlohmann::json catalog = nlohmann::json::array();
   for(const Tile& t : tiles)
   {

@@ -11,6 +11,7 @@
 #include <CGAL/Tilable_surfaces/IO/cluster_colors.h>
 #include <CGAL/Tilable_surfaces/named_parameters.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
+#include <CGAL/Tilable_surfaces/validation.h>
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -44,6 +45,8 @@ namespace IO {
 ///   \cgalParamNBegin{stream_precision} digits of ASCII coordinates (default 17) \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// \returns whether the stream is good after writing.
+/// \throws Invalid_input if `pm` fails `validate_quad_mesh()` or a face has
+/// a negative cluster or an orientation out of 0..7; nothing is written then.
 template <typename PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 bool write_tiled_PLY(std::ostream& os, const PolygonMesh& pm,
                      const CGAL_NP_CLASS& np = parameters::default_values())
@@ -59,6 +62,10 @@ bool write_tiled_PLY(std::ostream& os, const PolygonMesh& pm,
   const int precision = choose_parameter(get_parameter(np, CGAL::internal_np::stream_precision), 17);
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_const_property_map(CGAL::vertex_point, pm));
+
+  validate_quad_mesh(pm, np);
+  Tilable_surfaces::internal::check_face_labels(pm, CGAL::get_initialized_face_index_map(pm, np),
+                                                clusters, orientations);
 
   // Rebuilding a Surface_mesh lets CGAL's writer emit the properties. It is
   // built face by face (not with copy_face_graph(), which may start a face's

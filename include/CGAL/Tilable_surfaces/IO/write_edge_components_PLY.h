@@ -11,6 +11,7 @@
 #include <CGAL/Tilable_surfaces/IO/cluster_colors.h>
 #include <CGAL/Tilable_surfaces/named_parameters.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
+#include <CGAL/Tilable_surfaces/validation.h>
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -39,6 +40,9 @@ namespace IO {
 ///   \cgalParamNBegin{vertex_point_map} the points of `pm` \cgalParamNEnd
 ///   \cgalParamNBegin{use_binary_mode} binary if `true` (default) \cgalParamNEnd
 /// \cgalNamedParamsEnd
+/// \returns whether the stream is good after writing.
+/// \throws Invalid_input if `pm` fails `validate_quad_mesh()`; nothing is
+/// written then.
 template <typename PolygonMesh, typename EdgeComponentMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
 bool write_edge_components_PLY(std::ostream& os, const PolygonMesh& pm,
                                EdgeComponentMap edge_component_map,
@@ -51,6 +55,7 @@ bool write_edge_components_PLY(std::ostream& os, const PolygonMesh& pm,
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_const_property_map(CGAL::vertex_point, pm));
   const bool binary = choose_parameter(get_parameter(np, CGAL::internal_np::use_binary_mode), true);
+  validate_quad_mesh(pm, np);
 
   std::size_t number_of_components = 0;
   for(auto e : edges(pm))

@@ -118,7 +118,7 @@ edge_sharing_graph(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
   std::vector<int> o(orientation.size());
   for(std::size_t f = 0; f < o.size(); ++f) o[f] = orientation[f].index();
   return Edge_sharing_graph<PolygonMesh>(
-    pm, k, boost::make_iterator_property_map(label.begin(), fim),
+    Validated_mesh(true), pm, k, boost::make_iterator_property_map(label.begin(), fim),
     boost::make_iterator_property_map(o.begin(), fim),
     CGAL::parameters::face_index_map(fim).vertex_point_map(vpm));
 }

@@ -8,10 +8,11 @@
 // with CGAL's AABB tree. A quad is the fan of 4 triangles around its vertex
 // centroid: no diagonal is preferred, and the centroid lies on the bilinear
 // patch of the quad. The sampled surface is the same kind of surface, sampled
-// at its vertices and, on each face, at the apex of the fan, the midpoints of
-// the 4 edges and the centroids of the 4 fan triangles; so a surface measured
-// against itself is at distance 0. Both directions are needed: samples of the
-// result near the input say nothing of parts of the input the result left.
+// at the vertices of its faces and, on each face, at the apex of the fan, the
+// midpoints of the 4 edges and the centroids of the 4 fan triangles; so a
+// surface measured against itself is at distance 0. Both directions are
+// needed: samples of the result near the input say nothing of parts of the
+// input the result left.
 
 #include <CGAL/Tilable_surfaces/internal/Optimization/Tilable_problem.h>
 
@@ -64,8 +65,13 @@ inline Distance_summary one_sided_distance(const Tilable_problem& problem,
     s.mean += d;
     ++count;
   };
+  // The vertices of the faces: an isolated vertex is no part of the surface.
+  std::vector<bool> on_surface(std::size_t(sampled.rows()), false);
+  for(const auto& corners : problem.face_corners)
+    for(int v : corners) on_surface[std::size_t(v)] = true;
   for(Eigen::Index v = 0; v < sampled.rows(); ++v)
-    sample(sampled.row(v).transpose());
+    if(on_surface[std::size_t(v)])
+      sample(sampled.row(v).transpose());
   for(std::size_t f = 0; f < problem.face_corners.size(); ++f)
   {
     const Quad q = instance(problem, sampled, f);

@@ -1,0 +1,388 @@
+// Copyright (c) 2026 Tilable_surfaces contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TILABLE_SURFACES_IO_READ_POLYGON_MESH_H
+#define CGAL_TILABLE_SURFACES_IO_READ_POLYGON_MESH_H
+
+/// \file read_polygon_mesh.h
+/// Reads a quad mesh from OFF, OBJ or PLY without trusting the file: every
+/// count a file declares is checked against what the file's size can hold
+/// before anything is allocated, vertex references are checked, and unused
+/// vertices are kept (with a warning) instead of making the mesh invalid.
+
+#include <CGAL/Tilable_surfaces/exceptions.h>
+#include <CGAL/Tilable_surfaces/validation.h>
+
+#include <CGAL/IO/OBJ.h>
+#include <CGAL/IO/PLY.h>
+#include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <algorithm>
+#include <cctype>
+#include <cmath>
+#include <cstddef>
+#include <cstdint>
+#include <cstdlib>
+#include <fstream>
+#include <istream>
+#include <limits>
+#include <sstream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Tilable_surfaces {
+namespace IO {
+
+/// \ingroup PkgTilableSurfacesRef
+/// What `read_quad_mesh()` read, and what the caller should know about it.
+struct Read_report
+{
+  /// The number of vertices of the file used by no face. They are kept, at
+  /// their place in the vertex order, and the package never moves them.
+  std::size_t number_of_isolated_vertices = 0;
+  /// Warnings in words (empty when there is nothing to say).
+  std::vector<std::string> warnings;
+};
+
+namespace internal {
+
+// The tokens of a line, comments (from '#') removed.
+inline std::vector<std::string> line_tokens(const std::string& line)
+{
+  std::istringstream in(line.substr(0, line.find('#')));
+  std::vector<std::string> tokens;
+  for(std::string t; in >> t;) tokens.push_back(t);
+  return tokens;
+}
+
+// What is wrong with a file, before the path is prefixed.
+struct File_error : std::runtime_error
+{
+  using std::runtime_error::runtime_error;
+};
+
+// A count written in a file of `size` bytes: a non-negative integer no
+// larger than `limit`.
+inline std::size_t parse_count(const std::string& token, std::size_t limit, std::size_t size,
+                               const std::string& what)
+{
+  std::size_t end = 0;
+  long double value = -1;
+  try { value = std::stold(token, &end); } catch(const std::exception&) { end = 0; }
+  if(end == 0 || end != token.size() || !(value >= 0) || std::floor(value) != value)
+    throw File_error(what + " is '" + token + "', not a non-negative integer");
+  if(value > static_cast<long double>(limit))
+    throw File_error(what + " is " + token + ", more than the file of " + std::to_string(size) +
+                     " bytes can hold");
+  return std::size_t(value);
+}
+
+// Parses a whole token as a double, or throws saying what it was for.
+inline double parse_coordinate(const std::string& token, const std::string& what)
+{
+  char* end = nullptr;
+  const double x = std::strtod(token.c_str(), &end);
+  if(token.empty() || end != token.c_str() + token.size())
+    throw File_error(what + " has '" + token + "', not a number");
+  return x;
+}
+
+// ASCII OFF, read here rather than by CGAL's reader so that every count is
+// checked before it sizes anything: the keyword ([ST][C][N]OFF; colours,
+// normals and texture coordinates after the coordinates are ignored), the
+// vertex, face and edge counts, then one line per vertex and per face. Each
+// vertex needs at least 6 bytes ("0 0 0\n"), each face 4 ("1 0\n"), each
+// face corner 2.
+template <typename Point>
+void read_OFF_soup(std::istream& in, std::size_t size, std::vector<Point>& points,
+                   std::vector<std::vector<std::size_t> >& polygons)
+{
+  std::string line;
+  std::vector<std::string> header;
+  while(header.size() < 4 && std::getline(in, line))
+    for(const std::string& t : line_tokens(line)) header.push_back(t);
+  const std::string keyword = header.empty() ? std::string() : header[0];
+  const std::size_t off = keyword.rfind("OFF");
+  const std::string prefix = off == std::string::npos ? keyword : keyword.substr(0, off);
+  if(off == std::string::npos || off + 3 != keyword.size() ||
+     prefix.find_first_not_of("STCN") != std::string::npos)
+    throw File_error(keyword.find("OFF") != std::string::npos && keyword.find_first_of("4n") < off
+                       ? "the OFF variant '" + keyword + "' (4D or n-dimensional) is not supported"
+                       : "not an ASCII OFF file: it does not start with [ST][C][N]OFF");
+  if(header.size() > 1 && header[1] == "BINARY")
+    throw File_error("binary OFF is not supported; use PLY or ASCII OFF");
+  if(header.size() != 4)
+    throw File_error("the OFF header must give 3 counts (vertices, faces, edges), alone on their line");
+  const std::size_t nv = parse_count(header[1], size / 6, size, "the OFF vertex count");
+  const std::size_t nf = parse_count(header[2], size / 4, size, "the OFF face count");
+  if(nv * 6 + nf * 4 > size)
+    throw File_error("the OFF header claims " + std::to_string(nv) + " vertices and " +
+                     std::to_string(nf) + " faces, more than the file of " + std::to_string(size) +
+                     " bytes can hold");
+  points.reserve(nv);
+  polygons.reserve(nf);
+  while(points.size() + polygons.size() < nv + nf && std::getline(in, line))
+  {
+    const std::vector<std::string> tokens = line_tokens(line);
+    if(tokens.empty())
+      continue;
+    if(points.size() < nv)
+    {
+      const std::string what = "OFF vertex " + std::to_string(points.size());
+      if(tokens.size() < 3)
+        throw File_error(what + " has fewer than 3 coordinates");
+      points.emplace_back(parse_coordinate(tokens[0], what), parse_coordinate(tokens[1], what),
+                          parse_coordinate(tokens[2], what));
+      continue;
+    }
+    const std::string what = "OFF face " + std::to_string(polygons.size());
+    const std::size_t corners = parse_count(tokens[0], size / 2, size, "the vertex count of " + what);
+    if(corners + 1 > tokens.size())
+      throw File_error(what + " claims " + tokens[0] + " vertices but lists " +
+                       std::to_string(tokens.size() - 1));
+    polygons.emplace_back();
+    for(std::size_t j = 1; j <= corners; ++j)
+      polygons.back().push_back(
+        parse_count(tokens[j], (std::numeric_limits<std::size_t>::max)(), size, "a vertex of " + what));
+  }
+  if(points.size() < nv || polygons.size() < nf)
+    throw File_error("the OFF file is truncated: it declares " + std::to_string(nv) + " vertices and " +
+                     std::to_string(nf) + " faces but holds " + std::to_string(points.size()) +
+                     " and " + std::to_string(polygons.size()));
+}
+
+// PLY: each element count times the fewest bytes one element takes, and each
+// list's length, against the bytes left in the file (CGAL's reader sizes its
+// buffers by them). Binary bodies are walked property by property.
+inline void check_PLY_counts(std::istream& in, std::size_t size)
+{
+  struct Property { int count_bytes = 0; int value_bytes = 0; std::string count_type; };
+  struct Element { std::string name; std::size_t count = 0; std::vector<Property> properties; };
+  auto type_bytes = [](const std::string& t) -> int {
+    if(t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
+    if(t == "short" || t == "ushort" || t == "int16" || t == "uint16") return 2;
+    if(t == "int" || t == "uint" || t == "float" || t == "int32" || t == "uint32" || t == "float32") return 4;
+    if(t == "double" || t == "float64") return 8;
+    throw File_error("the PLY header has an unknown type '" + t + "'");
+  };
+  std::string line, format;
+  std::vector<Element> elements;
+  std::getline(in, line);
+  if(line.compare(0, 3, "ply") != 0)
+    throw File_error("not a PLY file: it does not start with ply");
+  while(std::getline(in, line))
+  {
+    const std::vector<std::string> t = line_tokens(line);
+    if(t.empty() || t[0] == "comment" || t[0] == "obj_info")
+      continue;
+    if(t[0] == "end_header")
+      break;
+    if(t[0] == "format" && t.size() >= 2)
+      format = t[1];
+    else if(t[0] == "element" && t.size() >= 3)
+      elements.push_back(Element{t[1], parse_count(t[2], size, size, "the PLY " + t[1] + " count"), {}});
+    else if(t[0] == "property" && !elements.empty() && t.size() >= 3)
+    {
+      Property p;
+      if(t[1] == "list" && t.size() >= 5)
+      {
+        p.count_type = t[2];
+        p.count_bytes = type_bytes(t[2]);
+        p.value_bytes = type_bytes(t[3]);
+      }
+      else
+        p.value_bytes = type_bytes(t[1]);
+      elements.back().properties.push_back(p);
+    }
+    else
+      throw File_error("the PLY header has an unexpected line '" + line + "'");
+  }
+  const bool ascii = (format == "ascii");
+  if(!ascii && format != "binary_little_endian" && format != "binary_big_endian")
+    throw File_error("the PLY format is '" + format + "', not ascii or binary");
+  const std::size_t body = size - (std::min)(size, std::size_t(in.tellg()));
+  // Fewest bytes per element: ascii, 2 per property ("0 "); binary, the sizes.
+  long double needed = 0;
+  for(const Element& e : elements)
+  {
+    std::size_t bytes = 0;
+    for(const Property& p : e.properties)
+      bytes += ascii ? 2 : std::size_t(p.count_bytes > 0 ? p.count_bytes : p.value_bytes);
+    needed += static_cast<long double>(e.count) * static_cast<long double>((std::max)(bytes, std::size_t(1)));
+  }
+  if(needed > static_cast<long double>(body))
+    throw File_error("the PLY header declares more elements than the " + std::to_string(body) +
+                        " bytes of data can hold");
+
+  // Lists: the length read before the values must fit in what is left.
+  const bool little = (format == "binary_little_endian");
+  const long double unreadable = std::numeric_limits<long double>::quiet_NaN();
+  auto read_count = [&](const Property& p) -> long double {
+    if(ascii)
+    {
+      std::string token;
+      if(!(in >> token)) return unreadable;
+      try { return std::stold(token); } catch(const std::exception&) { return unreadable; }
+    }
+    unsigned char b[8] = {0};
+    if(!in.read(reinterpret_cast<char*>(b), p.count_bytes)) return unreadable;
+    std::uint64_t u = 0;
+    for(int i = 0; i < p.count_bytes; ++i)
+      u |= std::uint64_t(b[little ? i : p.count_bytes - 1 - i]) << (8 * i);
+    const bool is_signed = p.count_type[0] != 'u';
+    if(is_signed && (u >> (8 * p.count_bytes - 1)) & 1u) return -1;  // negative
+    return static_cast<long double>(u);
+  };
+  for(const Element& e : elements)
+    for(std::size_t i = 0; i < e.count; ++i)
+      for(const Property& p : e.properties)
+      {
+        if(p.count_bytes == 0)
+        {
+          std::string token;
+          if(ascii ? !(in >> token) : !in.ignore(p.value_bytes))
+            return;  // truncated: CGAL's reader reports it
+          continue;
+        }
+        const long double n = read_count(p);
+        const std::streamoff here = in.tellg();
+        if(std::isnan(n) || here < 0)
+          return;  // unreadable or truncated: CGAL's reader fails on it too
+        if(n < 0)  // CGAL's reader would take it for a huge unsigned length
+          throw File_error("a PLY " + e.name + " (number " + std::to_string(i) +
+                           ") has a list of negative length");
+        const std::size_t left = size - (std::min)(size, std::size_t(here));
+        if(n * (ascii ? 2 : p.value_bytes) > static_cast<long double>(left))
+          throw File_error("a PLY " + e.name + " (number " + std::to_string(i) + ") claims a list of " +
+                              std::to_string(static_cast<unsigned long long>((std::min)(n, 1e19L))) +
+                              " values, more than the file holds");
+        if(ascii)
+          for(std::size_t j = 0; j < std::size_t(n); ++j) { std::string token; in >> token; }
+        else
+          in.ignore(std::streamsize(n) * p.value_bytes);
+      }
+}
+
+inline std::string lower_extension(const std::string& path)
+{
+  const std::size_t dot = path.find_last_of('.'), slash = path.find_last_of('/');
+  if(dot == std::string::npos || (slash != std::string::npos && dot < slash))
+    return std::string();
+  std::string e = path.substr(dot + 1);
+  for(char& c : e) c = char(std::tolower(static_cast<unsigned char>(c)));
+  return e;
+}
+
+} // namespace internal
+
+/// \ingroup PkgTilableSurfacesRef
+/// Reads a polygon mesh in the format `format` ("off" for ASCII OFF, read by
+/// the package itself; "obj",
+/// or "ply" for ASCII or binary PLY) from `in`, which must be seekable (a
+/// file opened in binary mode, or a string stream), into `pm` (cleared first).
+/// `name` names the source in the messages.
+///
+/// Unlike `CGAL::IO::read_polygon_mesh()`, it does not trust the data:
+/// - every count it declares (OFF header and face sizes, PLY element counts
+///   and list lengths) is compared with what the stream's size can hold
+///   before anything is allocated, so a 28-byte file claiming 1e9 vertices
+///   is refused at once instead of exhausting memory;
+/// - every vertex reference of a face must name a vertex of the data;
+/// - vertices used by no face are kept in the file's order and counted in the
+///   returned report, with a warning: the package accepts them and never
+///   moves them (see `number_of_isolated_vertices()`);
+/// - a soup that is not a manifold, consistently oriented polygon mesh is
+///   refused (nothing is repaired).
+///
+/// The mesh is not checked further: `validate_quad_mesh()` does that (every
+/// entry point of the package calls it).
+///
+/// \tparam PolygonMesh a model of `MutableFaceGraph` whose points are 3D
+///   points constructible from three doubles.
+/// \returns what was read that the caller should know.
+/// \throws Invalid_input saying what is wrong with the data; `pm` is empty then.
+template <typename PolygonMesh>
+Read_report read_quad_mesh(std::istream& in, const std::string& format, PolygonMesh& pm,
+                           const std::string& name = "the input")
+{
+  typedef CGAL::Simple_cartesian<double>::Point_3 Point;
+  CGAL::clear(pm);
+  if(format != "off" && format != "obj" && format != "ply")
+    throw Invalid_input("'" + name + "' is not an OFF, OBJ or PLY file (by its extension)");
+  in.seekg(0, std::ios::end);
+  const std::streamoff end = in.tellg();
+  in.seekg(0, std::ios::beg);
+  const std::size_t size = end > 0 ? std::size_t(end) : 0;
+  std::vector<Point> points;
+  std::vector<std::vector<std::size_t> > polygons;
+  try
+  {
+    if(format == "off") internal::read_OFF_soup(in, size, points, polygons);
+    if(format == "ply") internal::check_PLY_counts(in, size);
+  }
+  catch(const internal::File_error& e)
+  {
+    throw Invalid_input("'" + name + "': " + e.what());
+  }
+  in.clear();
+  in.seekg(0, std::ios::beg);
+
+  const auto quiet = CGAL::parameters::verbose(false);
+  const bool read = format == "off" ? true  // read above
+                  : format == "obj" ? CGAL::IO::read_OBJ(in, points, polygons, quiet)
+                                    : CGAL::IO::read_PLY(in, points, polygons, quiet);
+  if(!read)
+    throw Invalid_input("'" + name + "' is not a readable polygon mesh (corrupt or truncated file)");
+  std::vector<bool> used(points.size(), false);
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+    for(std::size_t v : polygons[f])
+    {
+      if(v >= points.size())
+        throw Invalid_input("'" + name + "': face " + std::to_string(f) + " uses vertex " +
+                            std::to_string(v) + " but there are " + std::to_string(points.size()) +
+                            " vertices", Invalid_input::FACE, f);
+      used[v] = true;
+    }
+  if(polygons.empty())
+    throw Invalid_input("'" + name + "' has no face");
+  if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))
+    throw Invalid_input("'" + name + "' is not a polygon mesh: a face uses a vertex twice or has "
+                        "fewer than 3, an edge has more than 2 faces, a vertex is non-manifold, or "
+                        "the faces are inconsistently oriented");
+  CGAL::Polygon_mesh_processing::polygon_soup_to_polygon_mesh(points, polygons, pm);
+
+  Read_report report;
+  report.number_of_isolated_vertices = std::size_t(std::count(used.begin(), used.end(), false));
+  if(report.number_of_isolated_vertices > 0)
+  {
+    const std::size_t first = std::size_t(std::find(used.begin(), used.end(), false) - used.begin());
+    report.warnings.push_back(std::to_string(report.number_of_isolated_vertices) +
+                              " vertices are used by no face (the first is vertex " +
+                              std::to_string(first) + "); they are kept and never moved");
+  }
+  return report;
+}
+
+/// \ingroup PkgTilableSurfacesRef
+/// Reads the file `path` as the function above does, the format given by its
+/// extension (.off, .obj or .ply, in any case).
+/// \throws Invalid_input if the file cannot be opened, or as the function above.
+template <typename PolygonMesh>
+Read_report read_quad_mesh(const std::string& path, PolygonMesh& pm)
+{
+  CGAL::clear(pm);
+  std::ifstream in(path, std::ios::binary);
+  if(!in)
+    throw Invalid_input("cannot open '" + path + "': no such file or not readable");
+  return read_quad_mesh(in, internal::lower_extension(path), pm, path);
+}
+
+} // namespace IO
+} // namespace Tilable_surfaces
+} // namespace CGAL
+
+#endif // CGAL_TILABLE_SURFACES_IO_READ_POLYGON_MESH_H

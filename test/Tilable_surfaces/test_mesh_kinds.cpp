@@ -1,0 +1,160 @@
+// End to end on every kind of mesh: a closed surface, CGAL::Polyhedron_3, a
+// Surface_mesh with removed elements not yet collected, and a kernel with
+// exact predicates. Each result is checked for congruence independently.
+#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Polyhedron_3.h>
+#include <CGAL/Polyhedron_items_with_id_3.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <CGAL/Tilable_surfaces/make_k_set_tilable.h>
+
+#include "congruence_check.h"
+
+#include <gtest/gtest.h>
+
+#include <map>
+#include <string>
+#include <vector>
+
+namespace TS = CGAL::Tilable_surfaces;
+namespace TSP = CGAL::Tilable_surfaces::parameters;
+
+namespace {
+
+template <typename Mesh>
+Mesh read(const std::string& name)
+{
+  Mesh mesh;
+  EXPECT_TRUE(CGAL::IO::read_polygon_mesh(std::string(CGAL_TILABLE_SURFACES_TEST_DATA) + "/" + name, mesh));
+  return mesh;
+}
+
+// Runs make_k_set_tilable() with K = k, maps keyed by face descriptor (so any
+// mesh type will do), and checks the result by an independent fit: tilable,
+// congruent, K clusters, every face labelled.
+template <typename Mesh>
+TS::K_set_tilable_result tile_and_check(Mesh& mesh, int k)
+{
+  typedef typename boost::graph_traits<Mesh>::face_descriptor Face;
+  std::map<Face, int> cluster, orientation;
+  const TS::K_set_tilable_result r = TS::make_k_set_tilable(
+    mesh, TSP::number_of_tiles(k)
+            .face_cluster_map(boost::make_assoc_property_map(cluster))
+            .face_orientation_map(boost::make_assoc_property_map(orientation)));
+  EXPECT_TRUE(r.is_tilable()) << r.optimization.measure.congruence_error;
+  EXPECT_EQ(cluster.size(), num_faces(mesh));
+  EXPECT_EQ(r.tiles.size(), std::size_t(k));
+  EXPECT_LE(congruence_by_umeyama(mesh, boost::make_assoc_property_map(cluster),
+                                  boost::make_assoc_property_map(orientation)), 2e-6);
+  return r;
+}
+
+template <typename Mesh>
+double max_coordinate_change(const Mesh& before, const Mesh& after)
+{
+  double change = 0;
+  auto b = vertices(before).begin();
+  for(auto v : vertices(after))
+  {
+    change = (std::max)(change, std::sqrt(CGAL::to_double(CGAL::squared_distance(
+                                  get(CGAL::vertex_point, before, *b), get(CGAL::vertex_point, after, v)))));
+    ++b;
+  }
+  return change;
+}
+
+} // namespace
+
+TEST(MeshKinds, ClosedTorusHasNoBoundaryAndBecomesTilable)
+{
+  typedef CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> Mesh;
+  Mesh torus = read<Mesh>("torus_quad.off");
+  ASSERT_TRUE(CGAL::is_closed(torus));
+  ASSERT_EQ(torus.number_of_faces(), 25u);
+  const Mesh input = torus;
+  const TS::K_set_tilable_result r = tile_and_check(torus, 2);
+  EXPECT_TRUE(CGAL::is_closed(torus));
+  EXPECT_GT(max_coordinate_change(input, torus), 1e-3) << "the 5 rings of quads into 2 tiles";
+  EXPECT_LT(r.optimization.measure.max_approximation_error, 0.2);
+}
+
+// With items with ids: the package indexes edges by halfedge id (without, a
+// static_assert says so).
+TEST(MeshKinds, Polyhedron3WithIds)
+{
+  typedef CGAL::Polyhedron_3<CGAL::Simple_cartesian<double>, CGAL::Polyhedron_items_with_id_3> Polyhedron;
+  Polyhedron mesh = read<Polyhedron>("monkey_saddle.off");
+  ASSERT_EQ(num_faces(mesh), 100u);
+  const Polyhedron input = mesh;
+  tile_and_check(mesh, 30);
+  EXPECT_GT(max_coordinate_change(input, mesh), 1e-6);
+}
+
+// The monkey saddle at K = 30 with the points of `Kernel`: tilable, and the
+// same numbers as with Simple_cartesian<double>, since the package computes in
+// doubles whatever the kernel (it reads coordinates with to_double() and
+// builds the moved points from doubles).
+template <typename Kernel>
+void check_same_as_on_doubles()
+{
+  typedef CGAL::Surface_mesh<typename Kernel::Point_3> Mesh;
+  typedef CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> Plain;
+  Mesh mesh = read<Mesh>("monkey_saddle.off");
+  Plain plain = read<Plain>("monkey_saddle.off");
+  const TS::K_set_tilable_result r = tile_and_check(mesh, 30), p = tile_and_check(plain, 30);
+  EXPECT_EQ(r.optimization.measure.congruence_error, p.optimization.measure.congruence_error);
+  auto v = vertices(plain).begin();
+  for(auto w : vertices(mesh))
+  {
+    EXPECT_EQ(CGAL::to_double(mesh.point(w).x()), plain.point(*v).x());
+    ++v;
+  }
+}
+
+TEST(MeshKinds, ExactPredicatesInexactConstructionsKernel)
+{
+  check_same_as_on_doubles<CGAL::Exact_predicates_inexact_constructions_kernel>();
+}
+
+// Exact constructions work too (no static_assert is needed).
+TEST(MeshKinds, ExactPredicatesExactConstructionsKernel)
+{
+  check_same_as_on_doubles<CGAL::Exact_predicates_exact_constructions_kernel>();
+}
+
+TEST(MeshKinds, SurfaceMeshWithRemovedElementsIsRefusedUntilCollected)
+{
+  typedef CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> Mesh;
+  Mesh mesh = read<Mesh>("monkey_saddle.off");
+  // A quad added and removed again, its vertices with it: 4 vertices, 4
+  // edges and a face removed but not collected.
+  std::vector<Mesh::Vertex_index> extra;
+  for(int i = 0; i < 4; ++i) extra.push_back(mesh.add_vertex(Mesh::Point(5 + (i & 1), 5 + (i >> 1), 0)));
+  CGAL::Euler::remove_face(mesh.halfedge(mesh.add_face(extra[0], extra[1], extra[3], extra[2])), mesh);
+  // remove_face() removed the isolated vertices too.
+  ASSERT_TRUE(mesh.has_garbage());
+  ASSERT_EQ(mesh.number_of_faces(), 100u);
+  ASSERT_GT(num_faces(mesh), 100u) << "BGL counts the removed face";
+
+  auto cluster = mesh.add_property_map<Mesh::Face_index, int>("f:c", -1).first;
+  auto orientation = mesh.add_property_map<Mesh::Face_index, int>("f:o", -1).first;
+  const Mesh before = mesh;
+  try
+  {
+    TS::make_k_set_tilable(mesh, TSP::number_of_tiles(30).face_cluster_map(cluster).face_orientation_map(orientation));
+    ADD_FAILURE() << "accepted";
+  }
+  catch(const TS::Invalid_input& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("collect_garbage()"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(max_coordinate_change(before, mesh), 0.0);
+  for(auto f : faces(mesh)) EXPECT_EQ(cluster[f], -1);
+
+  mesh.collect_garbage();
+  tile_and_check(mesh, 30);
+}

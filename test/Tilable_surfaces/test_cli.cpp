@@ -167,7 +167,7 @@ TEST(CommandLine, SwissReTowerEndToEnd) { check_run_on("swiss_re.off", 24, "json
 
 TEST(CommandLine, ObjOutputKeepsTheTilesWithItsMaterialLibrary)
 {
-  const fs::path dir = scratch("obj");
+  const Temp_dir dir("cli_obj");
   const int k = 5;
   const Run_result r = run(data_dir + "/monkey_saddle.off -k " + std::to_string(k) + " -o " +
                            (dir / "saddle.obj").string() + " --report " + (dir / "r.json").string());

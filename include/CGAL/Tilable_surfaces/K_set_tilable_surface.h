@@ -245,7 +245,7 @@ public:
   ///    similarity and DOF do not say how far a clustering moves the surface;
   ///    these do, the first to first order, the second for the long-range
   ///    equalities that the linearization underrates (tunnel stand-in,
-  ///    K = 10: the ring clustering ranks 12th by prediction, first by
+  ///    K = 10: the ring clustering ranks below the hierarchical ones by prediction, first by
   ///    spread, and ends 2x closer than the first by prediction). Taking the
   ///    two rankings in turn, the `number_of_optimized_candidates` first are
   ///    optimized fully from the input (default 2 + 1000 / number of faces:

@@ -147,10 +147,13 @@ TEST(EdgeSharingGraph, RejectsBadLabels)
 }
 
 // Two faces side by side, 2 x 1 and 3 x 1 (vertices 2 and 5 moved from x = 4
-// to x = 5). In one cluster, the bottom edges (2 and 3) form one component and
-// the top edges another: each spreads 2 x 0.5^2 = 0.5 about its mean 2.5; the
-// three vertical edges (all 1) form the third. In two clusters nothing is
-// tied: 0, and merging them ties exactly what one cluster does.
+// to x = 5). length_deviation() is the spread that the links of the graph
+// add between S-quad edges, not the spread of the edges that one S-quad edge
+// already holds (that is the cluster's shape dissimilarity): built as one
+// cluster, the two bottom edges (2 and 3) are the same S-quad edge, so 0.
+// Built as two clusters nothing is linked but the shared vertical edges
+// (all 1): 0; merging the two clusters links the bottom edges (2 x 0.5^2
+// about their mean 2.5) and the top edges likewise: 1.
 TEST(EdgeSharingGraph, LengthDeviationByHand)
 {
   Mesh m = grid<Mesh>(2, 1, 2.0, 1.0);
@@ -159,7 +162,7 @@ TEST(EdgeSharingGraph, LengthDeviationByHand)
   Labelling one = label(m, [](int) { return 0; });
   const TS::Edge_sharing_graph<Mesh> joined(m, 1, one.cluster, one.orientation);
   EXPECT_EQ(joined.degree_of_flexibility(), 3u);
-  EXPECT_NEAR(joined.length_deviation(), 1.0, 1e-12);
+  EXPECT_NEAR(joined.length_deviation(), 0.0, 1e-12);
 
   Mesh m2 = m;
   Labelling two = label(m2, [](int f) { return f; });

@@ -21,7 +21,6 @@
 #include <boost/pending/disjoint_sets.hpp>
 #include <boost/property_map/property_map.hpp>
 
-#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstddef>
@@ -167,10 +166,7 @@ public:
         if(edge_node == no_node())
         {
           edge_node = node;
-          Length_statistics& lengths = m_lengths[find(node)];
-          const double before = lengths.deviation();
-          lengths.add(internal::distance(get(vpm, source(h, pm)), get(vpm, target(h, pm))));
-          m_length_deviation += lengths.deviation() - before;
+          m_lengths[find(node)].add(internal::distance(get(vpm, source(h, pm)), get(vpm, target(h, pm))));
         }
         else
           link(edge_node, node);
@@ -292,11 +288,6 @@ private:
   {
     double count = 0, sum = 0, sum_of_squares = 0;
     void add(double length) { count += 1; sum += length; sum_of_squares += length * length; }
-    // The squared deviations of the lengths from their mean.
-    double deviation() const
-    {
-      return count > 0 ? (std::max)(sum_of_squares - sum * sum / count, 0.0) : 0.0;
-    }
     // The increase of the squared deviations from the mean if joined with `o`.
     double deviation_if_joined(const Length_statistics& o) const
     {

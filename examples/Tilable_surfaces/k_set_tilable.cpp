@@ -102,7 +102,7 @@ Options parse(int argc, char** argv, bool& help)
     ("tangential-weight", po::value<double>(&o.tangential_weight)->default_value(0.1),
      "default solver: cost of sliding in the input surface relative to leaving it, in (0, 1]")
     ("optimized-candidates", po::value<int>(&o.optimized_candidates)->default_value(0),
-     "default solver: clusterings optimized fully, the closest result is kept (0: 2 + 1000 / faces)")
+     "default solver: clusterings optimized fully, the closest result is kept (0: 2 + 10000 / faces, at most 12)")
     ("improvement-rounds", po::value<int>(&o.improvement_rounds)->default_value(2),
      "default solver: rounds of split, merge and re-optimization, each kept only if better")
     ("candidates", po::value<int>(&o.candidates)->default_value(10),

@@ -5,7 +5,10 @@
 #include "optimization_test_helpers.h"
 
 #include <CGAL/Tilable_surfaces/cluster_quads.h>
+#include <CGAL/Tilable_surfaces/internal/Optimization/sparse_solver.h>
 #include <CGAL/Tilable_surfaces/optimize_tilable_surface.h>
+
+#include <Eigen/Cholesky>
 
 #include <gtest/gtest.h>
 
@@ -344,3 +347,64 @@ TEST(Optimize, VolumeShapeSeesSliverHeights)
   EXPECT_NEAR(w.gradient[3][2], 2e-3 / std::sqrt(N2 * S + 1e-4 * S * S * S), 0.01 * 0.307);
   EXPECT_NEAR(TSI::scale_free_volume(item, X).gradient[3][2], 2e-3 / 6 / std::pow(S, 1.5), 0.01 * 6.1e-4);
 }
+
+// The factorization of the Gauss-Newton steps keeps its symbolic analysis
+// while the pattern stays; a new pattern must be analyzed again. Checked
+// against a dense Cholesky on small SPD matrices of two patterns.
+namespace {
+Eigen::SparseMatrix<double> spd_matrix(int n, int band, double shift)
+{
+  std::vector<Eigen::Triplet<double> > t;
+  for(int i = 0; i < n; ++i)
+  {
+    t.emplace_back(i, i, 2.0 * band + shift + 0.1 * i);
+    for(int k = 1; k <= band && i + k < n; ++k)
+    {
+      t.emplace_back(i, i + k, -1.0 / k);
+      t.emplace_back(i + k, i, -1.0 / k);
+    }
+  }
+  Eigen::SparseMatrix<double> A(n, n);
+  A.setFromTriplets(t.begin(), t.end());
+  return A;
+}
+} // namespace
+
+TEST(SparseSolver, ReanalyzesWhenThePatternChanges)
+{
+  CGAL::Tilable_surfaces::internal::SPD_solver solver;
+  const Eigen::VectorXd b = Eigen::VectorXd::LinSpaced(30, -1.0, 2.0);
+  for(const auto& A : {spd_matrix(30, 1, 1.0), spd_matrix(30, 1, 5.0), spd_matrix(30, 4, 1.0),
+                       spd_matrix(30, 1, 0.5)})
+  {
+    ASSERT_TRUE(solver.factorize(A));
+    const Eigen::VectorXd expected = Eigen::MatrixXd(A).llt().solve(b);
+    EXPECT_LT((solver.solve(b) - expected).norm(), 1e-12 * expected.norm());
+  }
+}
+
+TEST(SparseSolver, RefusesAnIndefiniteMatrix)
+{
+  CGAL::Tilable_surfaces::internal::SPD_solver solver;
+  Eigen::SparseMatrix<double> A = spd_matrix(10, 1, 1.0);
+  A.coeffRef(4, 4) = -3.0; // the leading 5 x 5 minor is negative
+  EXPECT_FALSE(solver.factorize(A));
+  EXPECT_FALSE(solver.positive_definite());
+  EXPECT_TRUE(solver.factorize(spd_matrix(10, 1, 1.0)));
+}
+
+#ifdef CGAL_TILABLE_SURFACES_USE_CHOLMOD
+// While CHOLMOD factorizes, OpenMP runs serially; the process's own setting
+// comes back afterwards (when an OpenMP runtime is loaded at all).
+TEST(SparseSolver, RestoresTheOpenMPSetting)
+{
+  typedef int (*Getter)();
+  const Getter levels = reinterpret_cast<Getter>(dlsym(RTLD_DEFAULT, "omp_get_max_active_levels"));
+  if(!levels)
+    GTEST_SKIP() << "no OpenMP runtime in the process";
+  const int before = levels();
+  CGAL::Tilable_surfaces::internal::SPD_solver solver;
+  ASSERT_TRUE(solver.factorize(spd_matrix(2000, 40, 1.0)));
+  EXPECT_EQ(levels(), before);
+}
+#endif

@@ -189,11 +189,10 @@ Solver_report constrained_gauss_newton_attempt(const Solver_input& in, const Sol
     Matrix K = H + b * Matrix(J.transpose() * J);
     if(exact_hessian)
       K += constraints.lagrangian_hessian(X, variable, n, lambda);
-    solver.analyzePattern(K);
     shift = shift == 0 ? 0 : (std::max)(shift / 3, 1e-8);
-    while(!factorize_positive_definite(solver, Matrix(K + shift * identity)) && shift < 1e8)
+    while(!solver.factorize(Matrix(K + shift * identity)) && shift < 1e8)
       shift = shift == 0 ? 1e-4 : 10 * shift;
-    if(solver.info() != Eigen::Success || shift >= 1e8)
+    if(!solver.positive_definite() || shift >= 1e8)
       break;
     // Progress: the optimality error (stationarity at the current
     // multipliers) with the exact Hessian, else the largest residual.
@@ -278,9 +277,8 @@ Solver_report constrained_gauss_newton_attempt(const Solver_input& in, const Sol
     projection.evaluate(X, variable, n, c, &J);
     // The floor bounds the conditioning, so that round-off is not amplified.
     const double mu = (std::max)(theta * c.cwiseAbs().maxCoeff() / ell, 1e-8);
-    solver.compute(Matrix(Matrix(J.transpose() * J) + mu * objective.isotropic_hessian()));
-    if(solver.info() != Eigen::Success) // mu too small for round-off: damp more
-    {
+    if(!solver.factorize(Matrix(Matrix(J.transpose() * J) + mu * objective.isotropic_hessian())))
+    { // mu too small for round-off: damp more
       theta *= 4;
       continue;
     }

@@ -51,8 +51,7 @@ inline Displacement_estimate linearized_displacement(const Solver_input& in, con
   constraints.evaluate(in.X0, variable, n, c, &J);
   const double b = kkt_regularization();
   SPD_solver solver;
-  solver.compute(Matrix(objective.hessian() + b * Matrix(J.transpose() * J)));
-  if(solver.info() != Eigen::Success)
+  if(!solver.factorize(Matrix(objective.hessian() + b * Matrix(J.transpose() * J))))
     return estimate;
   Eigen::VectorXd multipliers = Eigen::VectorXd::Zero(c.size());
   const Eigen::VectorXd delta =

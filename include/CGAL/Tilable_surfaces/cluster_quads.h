@@ -20,6 +20,7 @@
 #include <CGAL/Tilable_surfaces/internal/Clustering/initial_clustering.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/kmeans.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/merge_costs.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/segment_candidates.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/strip_candidates.h>
 
 #include <CGAL/Random.h>
@@ -58,7 +59,7 @@ enum Clustering_path
 struct Clustering_candidate
 {
   /// Where the configuration comes from.
-  enum Origin { HIERARCHICAL, KMEANS, QUAD_STRIPS };
+  enum Origin { HIERARCHICAL, KMEANS, QUAD_STRIPS, GRID_SEGMENTS };
   Origin origin = HIERARCHICAL;  ///< the search that produced it
   /// Its weight, in the units of the clustering path (see `Clustering_result::path`):
   /// sum of pairwise dissimilarities on the exact path, sum of pairwise squared
@@ -191,8 +192,13 @@ Cluster_shapes finished_clustering(const PolygonMesh& pm, FaceIndexMap fim, Vert
 ///    form the beam of the next K.
 /// -# <i>Final choice</i>: the pool is the last beam plus, with
 ///    `use_kmeans_candidate`, a k-means configuration (k-means++ seeded by
-///    `random_seed`, on the 7 descriptor components); the configuration with
-///    the lowest score is returned (on a tie, the first in the pool).
+///    `random_seed`, on the 7 descriptor components), with
+///    `use_strip_candidates` the quad-strip clusterings, and with
+///    `use_segment_candidates`, on a mesh whose quads form a grid, the
+///    segment clusterings (runs of rows, each a segment of column molds or a
+///    band of one mold, chosen by dynamic programming; see the user manual);
+///    the configuration with the lowest score is returned (on a tie, the
+///    first in the pool).
 /// -# <i>S-quads and orientations</i>: each cluster's S-quad is the Procrustes
 ///    mean of its instances. Each face is tagged with an <i>admissible</i>
 ///    orientation: a near-tie, whose dissimilarity to its S-quad exceeds the
@@ -228,6 +234,8 @@ Cluster_shapes finished_clustering(const PolygonMesh& pm, FaceIndexMap fim, Vert
 ///     criterion. \cgalParamNEnd
 ///   \cgalParamNBegin{use_kmeans_candidate} default `true`. \cgalParamNEnd
 ///   \cgalParamNBegin{use_auto_merge} default `true`. \cgalParamNEnd
+///   \cgalParamNBegin{use_strip_candidates} default `true`. \cgalParamNEnd
+///   \cgalParamNBegin{use_segment_candidates} default `true`. \cgalParamNEnd
 ///   \cgalParamNBegin{clustering_path} a `Clustering_path`; default `AUTOMATIC_PATH`. \cgalParamNEnd
 ///   \cgalParamNBegin{exact_clustering_limit} largest face count for the exact
 ///     path with `AUTOMATIC_PATH`; default 1500. \cgalParamNEnd
@@ -269,6 +277,7 @@ Clustering_result cluster_quads(const PolygonMesh& pm, const CGAL_NP_CLASS& np)
   const bool use_kmeans = choose_parameter(get_parameter(np, TS_np::use_kmeans_candidate), true);
   const bool auto_merge = choose_parameter(get_parameter(np, TS_np::use_auto_merge), true);
   const bool use_strips = choose_parameter(get_parameter(np, TS_np::use_strip_candidates), true);
+  const bool use_segments = choose_parameter(get_parameter(np, TS_np::use_segment_candidates), true);
   const Clustering_path requested_path =
     choose_parameter(get_parameter(np, TS_np::clustering_path), AUTOMATIC_PATH);
   const std::size_t exact_limit =
@@ -445,23 +454,28 @@ Clustering_result cluster_quads(const PolygonMesh& pm, const CGAL_NP_CLASS& np)
     }
   }
 
-  // 3b. Clusterings that follow the quad strips, oriented by best match.
+  // 3b. Clusterings that follow the quad strips, and segment clusterings of
+  // quad grids, oriented by best match.
+  auto add_candidate = [&](const std::vector<std::size_t>& label, Clustering_candidate::Origin origin) {
+    const internal::Cluster_shapes shapes = internal::cluster_shapes(quads, label, k, policy);
+    const Edge_sharing_graph<PolygonMesh> graph =
+      internal::edge_sharing_graph(pm, fim, vpm, label, shapes.orientation, k);
+    Clustering_candidate cand;
+    cand.origin = origin;
+    cand.weight = labelling_weight(label, k);
+    cand.degree_of_flexibility = graph.degree_of_flexibility();
+    cand.length_deviation = graph.length_deviation();
+    cand.score = score(cand.weight, cand.degree_of_flexibility, cand.length_deviation);
+    cand.face_cluster = label;
+    result.candidates.push_back(cand);
+  };
   if(use_strips && k > 1)
     for(const std::vector<std::size_t>& label :
           internal::strip_clusterings(pm, fim, vpm, quads, descriptors, k, policy, random))
-    {
-      const internal::Cluster_shapes shapes = internal::cluster_shapes(quads, label, k, policy);
-      const Edge_sharing_graph<PolygonMesh> graph =
-        internal::edge_sharing_graph(pm, fim, vpm, label, shapes.orientation, k);
-      Clustering_candidate cand;
-      cand.origin = Clustering_candidate::QUAD_STRIPS;
-      cand.weight = labelling_weight(label, k);
-      cand.degree_of_flexibility = graph.degree_of_flexibility();
-      cand.length_deviation = graph.length_deviation();
-      cand.score = score(cand.weight, cand.degree_of_flexibility, cand.length_deviation);
-      cand.face_cluster = label;
-      result.candidates.push_back(cand);
-    }
+      add_candidate(label, Clustering_candidate::QUAD_STRIPS);
+  if(use_segments && k > 1)
+    for(const std::vector<std::size_t>& label : internal::segment_clusterings(pm, fim, vpm, k, policy))
+      add_candidate(label, Clustering_candidate::GRID_SEGMENTS);
 
   // 4. The lowest score wins.
   for(std::size_t i = 1; i < result.candidates.size(); ++i)
@@ -470,7 +484,8 @@ Clustering_result cluster_quads(const PolygonMesh& pm, const CGAL_NP_CLASS& np)
   const Clustering_candidate& chosen = result.candidates[result.chosen_candidate];
   result.choice_reason =
     std::string(chosen.origin == Clustering_candidate::KMEANS ? "k-means"
-                : chosen.origin == Clustering_candidate::QUAD_STRIPS ? "quad-strip" : "hierarchical") +
+                : chosen.origin == Clustering_candidate::QUAD_STRIPS ? "quad-strip"
+                : chosen.origin == Clustering_candidate::GRID_SEGMENTS ? "grid-segment" : "hierarchical") +
     " configuration with the lowest score " + std::to_string(chosen.score) + " = weight " +
     std::to_string(chosen.weight) + " / " + std::to_string(w1) + " + " + std::to_string(lambda) +
     " x (" + std::to_string(d0) + " - DOF " + std::to_string(chosen.degree_of_flexibility) +

@@ -1,0 +1,433 @@
+// Copyright (c) 2026 Tilable_surfaces contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_SEGMENT_CANDIDATES_H
+#define CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_SEGMENT_CANDIDATES_H
+
+// Segment clusterings of quad grids, for the final pool of cluster_quads().
+//
+// When the quads form a grid, rows x columns (every strip of one direction,
+// a row, crosses every strip of the other, a column, exactly once: a tube, a
+// shell, a patch), a bent and growing tube can be kept with few molds by
+// cutting its rows into runs of consecutive rows:
+// - a *segment*: the columns are put into G groups, and every group is one
+//   mold across the run. Rows of congruent quads position by position make a
+//   piece of a swept surface of constant section (on a bent tube, a piece of
+//   a torus): the bend is kept, the growth is frozen.
+// - a *band*: the whole run is one mold. A ring of congruent quads is a
+//   frustum; it changes the section's size from one segment to the next.
+// - a one-row segment: a ring with a mold per column group, where the
+//   section can both turn and change size.
+// A shell made of these keeps its spiral and its growth, where whole rings
+// (bands only) straighten it and whole columns (one segment) freeze it
+// (seashell stand-in, K = 60: three segments and three one-row segments,
+// 2.2% of the diagonal and the spiral kept, against a boxy torus at 5.7%
+// from the other candidates and a straight tube of rings at 22%).
+//
+// The runs are chosen by dynamic programming with exactly K molds, the cost
+// of a run being the spread of the shapes it makes congruent: per mold, the
+// sum of squared differences of the six corner distances (four edges, two
+// diagonals) of its quads from their mean, in corresponding corner order.
+// Prefix sums over the rows make every run's cost O(G).
+
+#include <CGAL/Tilable_surfaces/internal/Clustering/fast_match.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/strip_candidates.h>
+
+#include <CGAL/boost/graph/helpers.h>
+
+#include <algorithm>
+#include <array>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Tilable_surfaces {
+namespace internal {
+
+// The faces of a quad grid: face_at[row * columns + column].
+struct Quad_grid
+{
+  std::size_t rows = 0, columns = 0;
+  std::vector<std::size_t> face_at;
+  std::vector<Quad> corners;  // per face; corners 3 and 0 on its edge towards the next column
+};
+
+// The faces of the strip through `f` that enters and leaves `f` through
+// face edges `j` and `j + 2`, in order, starting at `f` when the strip is
+// closed and at one of its ends otherwise.
+template <typename PolygonMesh, typename FaceIndexMap>
+std::vector<std::size_t> ordered_strip(const PolygonMesh& pm, FaceIndexMap fim,
+                                       typename boost::graph_traits<PolygonMesh>::face_descriptor f, int j)
+{
+  typedef typename boost::graph_traits<PolygonMesh>::halfedge_descriptor halfedge_descriptor;
+  halfedge_descriptor h = halfedge(f, pm);
+  for(int i = 0; i <= j; ++i)
+    h = next(h, pm);
+  // Walks out of f through `exit`, appending the faces met, until a border
+  // (false) or f again (true: a closed strip).
+  auto walk = [&](halfedge_descriptor exit, std::vector<std::size_t>& out) {
+    for(std::size_t guard = 0; guard < num_faces(pm); ++guard)
+    {
+      if(is_border(opposite(exit, pm), pm))
+        return false;
+      const halfedge_descriptor in = opposite(exit, pm);
+      if(face(in, pm) == f)
+        return true;
+      out.push_back(std::size_t(get(fim, face(in, pm))));
+      exit = next(next(in, pm), pm);
+    }
+    return false;
+  };
+  std::vector<std::size_t> forward, backward;
+  if(walk(next(next(h, pm), pm), forward))
+  {
+    forward.insert(forward.begin(), std::size_t(get(fim, f)));
+    return forward;
+  }
+  walk(h, backward);
+  std::reverse(backward.begin(), backward.end());
+  backward.push_back(std::size_t(get(fim, f)));
+  backward.insert(backward.end(), forward.begin(), forward.end());
+  return backward;
+}
+
+// The grid whose rows are the strips of direction `row_direction`, or an
+// empty grid (rows == 0) if the quads do not form one.
+template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
+Quad_grid quad_grid(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
+                    const std::array<std::vector<std::size_t>, 2>& strips, int row_direction)
+{
+  typedef typename boost::graph_traits<PolygonMesh>::face_descriptor face_descriptor;
+  typedef typename boost::graph_traits<PolygonMesh>::halfedge_descriptor halfedge_descriptor;
+  const std::size_t n = num_faces(pm);
+  std::vector<face_descriptor> face_of(n);
+  for(face_descriptor f : faces(pm))
+    face_of[get(fim, f)] = f;
+  Quad_grid grid;
+  if(n == 0)
+    return grid;
+  // The column of face 0 orders the rows, its row orders the columns.
+  const std::vector<std::size_t> down = ordered_strip(pm, fim, face_of[0], 1 - row_direction);
+  const std::vector<std::size_t> across = ordered_strip(pm, fim, face_of[0], row_direction);
+  const std::size_t rows = down.size(), columns = across.size();
+  if(rows < 2 || columns < 3 || rows * columns != n)
+    return grid;
+  std::vector<std::size_t> row_rank(n, no_index()), column_rank(n, no_index());
+  for(std::size_t r = 0; r < rows; ++r) row_rank[strips[row_direction][down[r]]] = r;
+  for(std::size_t c = 0; c < columns; ++c) column_rank[strips[1 - row_direction][across[c]]] = c;
+  std::vector<std::size_t> face_at(n, no_index());
+  for(std::size_t f = 0; f < n; ++f)
+  {
+    const std::size_t r = row_rank[strips[row_direction][f]], c = column_rank[strips[1 - row_direction][f]];
+    if(r == no_index() || c == no_index() || face_at[r * columns + c] != no_index())
+      return grid;
+    face_at[r * columns + c] = f;
+  }
+  // Corners from the edge shared with the next column (in a closed row the
+  // last column's next is the first; in an open row the last column takes
+  // the edge opposite to the one it shares with the previous column), so
+  // that corresponding corners of all faces have the same place in the grid.
+  auto shared_halfedge = [&](std::size_t f, std::size_t g, halfedge_descriptor& found) {
+    halfedge_descriptor h = halfedge(face_of[f], pm);
+    for(int i = 0; i < 4; ++i, h = next(h, pm))
+      if(!is_border(opposite(h, pm), pm) && std::size_t(get(fim, face(opposite(h, pm), pm))) == g)
+      {
+        found = h;
+        return true;
+      }
+    return false;
+  };
+  std::vector<Quad> corners(n);
+  for(std::size_t r = 0; r < rows; ++r)
+    for(std::size_t c = 0; c < columns; ++c)
+    {
+      const std::size_t f = face_at[r * columns + c];
+      halfedge_descriptor h;
+      if(!shared_halfedge(f, face_at[r * columns + (c + 1) % columns], h))
+      {
+        if(c + 1 < columns || !shared_halfedge(f, face_at[r * columns + c - 1], h))
+          return grid;
+        h = next(next(h, pm), pm);
+      }
+      for(int i = 0; i < 4; ++i, h = next(h, pm))
+        corners[f][i] = to_eigen(get(vpm, target(h, pm)));
+    }
+  grid.rows = rows;
+  grid.columns = columns;
+  grid.face_at.swap(face_at);
+  grid.corners.swap(corners);
+  return grid;
+}
+
+// One way to make a run of rows congruent: the columns in `groups` groups,
+// each one mold over the run, with per face the six corner distances in the
+// corner order of its group (prefix sums over the rows).
+struct Run_option
+{
+  std::size_t groups = 1;
+  std::vector<std::size_t> column_group;
+  std::vector<Eigen::Matrix<double, 6, 1> > sum;  // [(row + 1) * groups + g], prefix over rows
+  std::vector<double> squared_sum;                // same
+  std::vector<std::size_t> count;                 // per group: columns in it
+
+  // The spread of the shapes made congruent over rows [a, b).
+  double cost(std::size_t a, std::size_t b) const
+  {
+    double c = 0;
+    for(std::size_t g = 0; g < groups; ++g)
+    {
+      const Eigen::Matrix<double, 6, 1> s1 = sum[b * groups + g] - sum[a * groups + g];
+      const double s2 = squared_sum[b * groups + g] - squared_sum[a * groups + g];
+      c += s2 - s1.squaredNorm() / double((b - a) * count[g]);
+    }
+    return (std::max)(c, 0.);
+  }
+};
+
+inline Eigen::Matrix<double, 6, 1> corner_distances(const Quad& q)
+{
+  Eigen::Matrix<double, 6, 1> d;
+  d << (q[1] - q[0]).norm(), (q[2] - q[1]).norm(), (q[3] - q[2]).norm(), (q[0] - q[3]).norm(),
+       (q[2] - q[0]).norm(), (q[3] - q[1]).norm();
+  return d;
+}
+
+// The option with the columns grouped by `column_group` (groups numbered
+// 0..groups-1); each column is put in the corner order of its group's
+// first column by their best match on the middle row.
+inline Run_option run_option(const Quad_grid& grid, const std::vector<std::size_t>& column_group,
+                             std::size_t groups, Orientation_policy policy)
+{
+  Run_option o;
+  o.groups = groups;
+  o.column_group = column_group;
+  o.count.assign(groups, 0);
+  const std::size_t middle = grid.rows / 2;
+  std::vector<std::size_t> first(groups, no_index());
+  std::vector<Quad_orientation> orientation(grid.columns);
+  for(std::size_t c = 0; c < grid.columns; ++c)
+  {
+    const std::size_t g = column_group[c];
+    ++o.count[g];
+    if(first[g] == no_index())
+      first[g] = c;
+    else
+      orientation[c] = fast_best_match(grid.corners[grid.face_at[middle * grid.columns + first[g]]],
+                                       grid.corners[grid.face_at[middle * grid.columns + c]], policy)
+                         .orientation;
+  }
+  o.sum.assign((grid.rows + 1) * groups, Eigen::Matrix<double, 6, 1>::Zero());
+  o.squared_sum.assign((grid.rows + 1) * groups, 0.);
+  for(std::size_t r = 0; r < grid.rows; ++r)
+  {
+    for(std::size_t g = 0; g < groups; ++g)
+    {
+      o.sum[(r + 1) * groups + g] = o.sum[r * groups + g];
+      o.squared_sum[(r + 1) * groups + g] = o.squared_sum[r * groups + g];
+    }
+    for(std::size_t c = 0; c < grid.columns; ++c)
+    {
+      const Eigen::Matrix<double, 6, 1> d =
+        corner_distances(reoriented(grid.corners[grid.face_at[r * grid.columns + c]], orientation[c]));
+      o.sum[(r + 1) * groups + column_group[c]] += d;
+      o.squared_sum[(r + 1) * groups + column_group[c]] += d.squaredNorm();
+    }
+  }
+  return o;
+}
+
+// The corner distances of a quad listed in the order of template corners
+// matched with orientation `o`: d'(i, j) = d(o(i), o(j)).
+inline Eigen::Matrix<double, 6, 1> reoriented(const Eigen::Matrix<double, 6, 1>& d, Quad_orientation o)
+{
+  static const int pair[6][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 2}, {1, 3}};
+  auto index = [](int i, int j) {
+    for(int p = 0; p < 6; ++p)
+      if((pair[p][0] == i && pair[p][1] == j) || (pair[p][0] == j && pair[p][1] == i)) return p;
+    return 0;
+  };
+  Eigen::Matrix<double, 6, 1> r;
+  for(int p = 0; p < 6; ++p)
+    r[p] = d[index(o(pair[p][0]), o(pair[p][1]))];
+  return r;
+}
+
+// The columns in `groups` groups, merged greedily by least increase of the
+// run cost over all rows (Ward's criterion on the corner distances), each
+// group in the corner order of its first column, the others matched to it
+// on the middle row. On a section symmetric by a plane the mirror columns
+// pair up first.
+inline std::vector<std::size_t> group_columns(const Quad_grid& grid, std::size_t groups, Orientation_policy policy)
+{
+  typedef Eigen::Matrix<double, 6, 1> Distances;
+  const std::size_t rows = grid.rows, columns = grid.columns, middle = rows / 2;
+  std::vector<std::vector<Distances> > sum(columns, std::vector<Distances>(rows));
+  for(std::size_t c = 0; c < columns; ++c)
+    for(std::size_t r = 0; r < rows; ++r)
+      sum[c][r] = corner_distances(grid.corners[grid.face_at[r * columns + c]]);
+  std::vector<Quad_orientation> match(columns * columns);
+  parallel_for(columns, [&](std::size_t a) {
+    for(std::size_t b = a + 1; b < columns; ++b)
+      match[a * columns + b] = fast_best_match(grid.corners[grid.face_at[middle * columns + a]],
+                                               grid.corners[grid.face_at[middle * columns + b]], policy)
+                                 .orientation;
+  });
+  std::vector<std::size_t> size(columns, 1), parent(columns);
+  for(std::size_t c = 0; c < columns; ++c) parent[c] = c;
+  auto increase = [&](std::size_t a, std::size_t b) {
+    double d = 0;
+    for(std::size_t r = 0; r < rows; ++r)
+      d += (sum[a][r] / double(size[a]) - reoriented(sum[b][r], match[a * columns + b]) / double(size[b]))
+             .squaredNorm();
+    return d * double(size[a] * size[b]) / double(size[a] + size[b]);
+  };
+  std::vector<double> cost(columns * columns, 0.);
+  parallel_for(columns, [&](std::size_t a) {
+    for(std::size_t b = a + 1; b < columns; ++b) cost[a * columns + b] = increase(a, b);
+  });
+  for(std::size_t count = columns; count > groups; --count)
+  {
+    std::size_t kept = 0, removed = 0;
+    double best = (std::numeric_limits<double>::max)();
+    for(std::size_t a = 0; a < columns; ++a)
+      for(std::size_t b = a + 1; parent[a] == a && b < columns; ++b)
+        if(parent[b] == b && cost[a * columns + b] < best)
+        {
+          best = cost[a * columns + b];
+          kept = a;
+          removed = b;
+        }
+    for(std::size_t r = 0; r < rows; ++r)
+      sum[kept][r] += reoriented(sum[removed][r], match[kept * columns + removed]);
+    size[kept] += size[removed];
+    parent[removed] = kept;
+    for(std::size_t c = 0; c < columns; ++c)
+      if(parent[c] == c && c != kept)
+        cost[(std::min)(c, kept) * columns + (std::max)(c, kept)] = c < kept ? increase(c, kept) : increase(kept, c);
+  }
+  std::vector<std::size_t> group(columns);
+  for(std::size_t c = 0; c < columns; ++c)
+  {
+    std::size_t g = c;
+    while(parent[g] != g) g = parent[g];
+    group[c] = g;
+  }
+  relabel_by_first_face(group);
+  return group;
+}
+
+// The runs of rows, each with one of `options`, that use exactly k molds
+// with the least total cost; the cluster of every face, numbered by first
+// face, or an empty vector when no partition uses exactly k molds.
+//
+// Two segments of several rows never follow each other: in such a segment
+// every quad has equal edges on its two row sides, so both would share one
+// section and tie the lengths of the whole chain together, which the
+// per-run cost does not see. A band or a one-row segment between them lets
+// the section change.
+inline std::vector<std::size_t> best_runs(const Quad_grid& grid, const std::vector<const Run_option*>& options,
+                                          std::size_t k)
+{
+  const std::size_t rows = grid.rows;
+  const double infinity = (std::numeric_limits<double>::max)();
+  // State (r, m, s): rows [0, r) with m molds, s whether the last run is a
+  // segment of several rows.
+  auto state = [k](std::size_t r, std::size_t m, bool s) { return (r * (k + 1) + m) * 2 + (s ? 1 : 0); };
+  std::vector<double> best((rows + 1) * (k + 1) * 2, infinity);
+  struct Choice { std::size_t start = 0, option = 0; bool segment_before = false; };
+  std::vector<Choice> choice(best.size());
+  best[state(0, 0, false)] = 0;
+  for(std::size_t b = 1; b <= rows; ++b)
+    for(std::size_t a = 0; a < b; ++a)
+      for(std::size_t i = 0; i < options.size(); ++i)
+      {
+        const std::size_t m = options[i]->groups;
+        if(m > k) continue;
+        const bool segment = m > 1 && b - a > 1;
+        const double run = options[i]->cost(a, b);
+        for(std::size_t used = 0; used + m <= k; ++used)
+          for(bool before_segment : {false, true})
+          {
+            const double before = best[state(a, used, before_segment)];
+            if(before == infinity || (segment && before_segment))
+              continue;
+            double& after = best[state(b, used + m, segment)];
+            if(before + run >= after)
+              continue;
+            after = before + run;
+            choice[state(b, used + m, segment)] = {a, i, before_segment};
+          }
+      }
+  std::vector<std::size_t> label;
+  std::size_t b = rows, m = k;
+  bool segment = best[state(rows, k, true)] < best[state(rows, k, false)];
+  if(best[state(rows, k, segment)] == infinity)
+    return label;
+  label.assign(grid.face_at.size(), 0);
+  while(b > 0)
+  {
+    const Choice c = choice[state(b, m, segment)];
+    const Run_option& o = *options[c.option];
+    m -= o.groups;
+    for(std::size_t r = c.start; r < b; ++r)
+      for(std::size_t col = 0; col < grid.columns; ++col)
+        label[grid.face_at[r * grid.columns + col]] = m + o.column_group[col];
+    b = c.start;
+    segment = c.segment_before;
+  }
+  relabel_by_first_face(label);
+  return label;
+}
+
+// The segment clusterings with k clusters, for both choices of the rows:
+// bands with segments of the columns in G groups, for G the number of
+// columns, half and a quarter of it (`group_columns()`), then with all of
+// them. None when the quads do not form a grid, or it has more than
+// `max_rows` rows or `max_columns` columns.
+template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
+std::vector<std::vector<std::size_t> >
+segment_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, std::size_t k,
+                    Orientation_policy policy, std::size_t max_rows = 400, std::size_t max_columns = 400)
+{
+  std::vector<std::vector<std::size_t> > result;
+  const std::array<std::vector<std::size_t>, 2> strips = quad_strips(pm, fim);
+  for(int row_direction = 0; row_direction < 2; ++row_direction)
+  {
+    const Quad_grid grid = quad_grid(pm, fim, vpm, strips, row_direction);
+    // The dynamic program takes about 4 rows^2 K steps.
+    if(grid.rows == 0 || grid.rows > max_rows || grid.columns > max_columns ||
+       double(grid.rows) * double(grid.rows) * double(k) > 1e8)
+      continue;
+    std::vector<Run_option> options;
+    options.push_back(run_option(grid, std::vector<std::size_t>(grid.columns, 0), 1, policy));
+    for(std::size_t groups : {grid.columns, (grid.columns + 1) / 2, (grid.columns + 3) / 4})
+    {
+      if(groups < 2 || groups > k || options.back().groups == groups)
+        continue;
+      std::vector<std::size_t> column_group(grid.columns);
+      for(std::size_t c = 0; c < grid.columns; ++c) column_group[c] = c;
+      if(groups < grid.columns)
+        column_group = group_columns(grid, groups, policy);
+      options.push_back(run_option(grid, column_group, groups, policy));
+    }
+    std::vector<std::vector<const Run_option*> > sets;
+    for(std::size_t i = 1; i < options.size(); ++i)
+      sets.push_back({&options[0], &options[i]});
+    sets.push_back({});
+    for(const Run_option& o : options)
+      sets.back().push_back(&o);
+    for(const std::vector<const Run_option*>& set : sets)
+    {
+      std::vector<std::size_t> label = best_runs(grid, set, k);
+      if(!label.empty() && std::find(result.begin(), result.end(), label) == result.end())
+        result.push_back(label);
+    }
+  }
+  return result;
+}
+
+} // namespace internal
+} // namespace Tilable_surfaces
+} // namespace CGAL
+
+#endif // CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_SEGMENT_CANDIDATES_H

@@ -223,8 +223,10 @@ strip_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, c
       std::array<std::vector<std::size_t>, 2> grouped;
       for(int d = 0; d < 2; ++d)
       {
-        grouped[d] = groups[d] == 1 ? std::vector<std::size_t>(strips[d].size(), 0) : strips[d];
-        if(groups[d] > 1)
+        grouped[d] = strips[d];
+        if(groups[d] == 1)
+          std::fill(grouped[d].begin(), grouped[d].end(), std::size_t(0));
+        else
           merge_strips_to(groups[d], pm, fim, vpm, quads, policy, grouped[d], count[d]);
       }
       std::vector<std::size_t> label(strips[0].size());

@@ -354,7 +354,8 @@ public:
       internal::notify_phase(visitor, "improvement round", timer.time(), 0);
     }
     m_clustering.choice_reason = "closest result among the " + std::to_string(ranked.size()) +
-      " candidates of smallest predicted displacement or length spread, then " + std::to_string(rounds) +
+      " candidates of smallest predicted displacement or length spread, or first segment clusterings, then " +
+      std::to_string(rounds) +
       " improvement rounds; " + m_clustering.choice_reason;
     return m_optimization;
   }

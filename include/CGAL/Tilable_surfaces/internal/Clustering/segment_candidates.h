@@ -38,6 +38,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <numeric>
 #include <vector>
 
 namespace CGAL {
@@ -237,18 +238,31 @@ inline Run_option run_option(const Quad_grid& grid, const std::vector<std::size_
 }
 
 // The corner distances of a quad listed in the order of template corners
-// matched with orientation `o`: d'(i, j) = d(o(i), o(j)).
+// matched with orientation `o`: d'(i, j) = d(o(i), o(j)). The 8 index
+// permutations are tabulated once: the column grouping calls this in its
+// inner loop.
 inline Eigen::Matrix<double, 6, 1> reoriented(const Eigen::Matrix<double, 6, 1>& d, Quad_orientation o)
 {
-  static const int pair[6][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 2}, {1, 3}};
-  auto index = [](int i, int j) {
-    for(int p = 0; p < 6; ++p)
-      if((pair[p][0] == i && pair[p][1] == j) || (pair[p][0] == j && pair[p][1] == i)) return p;
-    return 0;
-  };
+  typedef std::array<std::array<int, 6>, 8> Table;
+  static const Table permutation = [] {
+    const int pair[6][2] = {{0, 1}, {1, 2}, {2, 3}, {3, 0}, {0, 2}, {1, 3}};
+    Table t{};
+    for(int index = 0; index < 8; ++index)
+    {
+      const Quad_orientation to(index);
+      for(int p = 0; p < 6; ++p)
+        for(int q = 0; q < 6; ++q)
+        {
+          const int i = to(pair[p][0]), j = to(pair[p][1]);
+          if((pair[q][0] == i && pair[q][1] == j) || (pair[q][0] == j && pair[q][1] == i))
+            t[index][p] = q;
+        }
+    }
+    return t;
+  }();
   Eigen::Matrix<double, 6, 1> r;
   for(int p = 0; p < 6; ++p)
-    r[p] = d[index(o(pair[p][0]), o(pair[p][1]))];
+    r[p] = d[permutation[o.index()][p]];
   return r;
 }
 
@@ -405,17 +419,22 @@ segment_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
       if(groups < 2 || groups > k || options.back().groups == groups)
         continue;
       std::vector<std::size_t> column_group(grid.columns);
-      for(std::size_t c = 0; c < grid.columns; ++c) column_group[c] = c;
       if(groups < grid.columns)
         column_group = group_columns(grid, groups, policy);
+      else
+        std::iota(column_group.begin(), column_group.end(), std::size_t(0));
       options.push_back(run_option(grid, column_group, groups, policy));
     }
     std::vector<std::vector<const Run_option*> > sets;
     for(std::size_t i = 1; i < options.size(); ++i)
       sets.push_back({&options[0], &options[i]});
-    sets.push_back({});
-    for(const Run_option& o : options)
-      sets.back().push_back(&o);
+    // All options together, unless that is the one set above.
+    if(options.size() != 2)
+    {
+      sets.push_back({});
+      for(const Run_option& o : options)
+        sets.back().push_back(&o);
+    }
     for(const std::vector<const Run_option*>& set : sets)
     {
       std::vector<std::size_t> label = best_runs(grid, set, k);

@@ -7,56 +7,23 @@
 // process's high-water mark (VmHWM), so sizes are run in increasing order.
 //
 // Usage: benchmark_clustering [K] [max_quads]
+#include "benchmark_surfaces.h"
+
 #include <CGAL/Tilable_surfaces/cluster_quads.h>
 
 #include <CGAL/Real_timer.h>
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 
-#include <cmath>
 #include <cstdlib>
-#include <fstream>
 #include <iostream>
 #include <string>
-#include <vector>
 
 namespace TS = CGAL::Tilable_surfaces;
 typedef CGAL::Simple_cartesian<double> Kernel;
 typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
 
-namespace {
-
-Mesh seashell(int n)
-{
-  Mesh m;
-  std::vector<Mesh::Vertex_index> v;
-  for(int i = 0; i <= n; ++i)
-    for(int j = 0; j < n; ++j)  // closed around s
-    {
-      const double t = 1.5 * M_PI * i / n, s = 2 * M_PI * j / n;
-      const double big_r = std::exp(0.25 * t), r = 0.55 * big_r;
-      v.push_back(m.add_vertex(Kernel::Point_3((big_r + r * std::cos(s)) * std::cos(t),
-                                               (big_r + r * std::cos(s)) * std::sin(t),
-                                               r * std::sin(s))));
-    }
-  auto id = [&](int i, int j) { return v[i * n + (j % n)]; };
-  for(int i = 0; i < n; ++i)
-    for(int j = 0; j < n; ++j)
-      m.add_face(id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
-  return m;
-}
-
-double peak_memory_mb()
-{
-  std::ifstream status("/proc/self/status");
-  std::string line;
-  while(std::getline(status, line))
-    if(line.rfind("VmHWM:", 0) == 0)
-      return std::stod(line.substr(6)) / 1024.0;  // kB
-  return -1;
-}
-
-} // namespace
+using benchmark_surfaces::peak_memory_mb;
 
 int main(int argc, char** argv)
 {
@@ -68,7 +35,7 @@ int main(int argc, char** argv)
   {
     if(std::size_t(n) * n > max_quads)
       break;
-    Mesh m = seashell(n);
+    Mesh m = benchmark_surfaces::seashell<Mesh>(n);
     auto cluster = m.add_property_map<Mesh::Face_index, std::size_t>("f:cluster", 0).first;
     auto orientation = m.add_property_map<Mesh::Face_index, int>("f:orientation", 0).first;
     CGAL::Real_timer timer;

@@ -167,3 +167,33 @@ TEST(MakeKSetTilable, SameResultWhateverTheThreadCount)
   EXPECT_TRUE(results[0] == results[1]) << "bit-identical positions";
 }
 #endif
+
+namespace {
+
+// Stops the solver at its first iteration; the copies the pipeline makes
+// share the count.
+struct Stop_at_once_visitor
+{
+  int* iterations;
+  bool iteration(int, double, double)
+  {
+    ++*iterations;
+    return false;
+  }
+};
+
+} // namespace
+
+// A visitor that stops the solver stops the whole search: no further
+// candidate clustering or improvement round is optimized (without this, each
+// of the candidates and rounds would call it again).
+TEST(MakeKSetTilable, VisitorThatStopsEndsTheSearch)
+{
+  Mesh mesh = read("de_beers_ginza.off");
+  int iterations = 0;
+  const TS::K_set_tilable_result r =
+    TS::make_k_set_tilable(mesh, TSP::number_of_tiles(30).visitor(Stop_at_once_visitor{&iterations}));
+  EXPECT_EQ(iterations, 1);
+  EXPECT_TRUE(r.optimization.stopped_by_visitor);
+  EXPECT_EQ(r.optimization.iterations, 1);
+}

@@ -264,7 +264,13 @@ public:
   ///    spreads the input's edge lengths least
   ///    (`Edge_sharing_graph::length_deviation_after_merge()`), the one with
   ///    the smallest predicted displacement is merged; orientations are
-  ///    re-tagged and the result optimized again from the input.
+  ///    re-tagged and the result optimized again from the input. A round
+  ///    that does not improve the result is not repeated: the next one splits
+  ///    the next cluster in that order.
+  /// -# While the best result is not tilable, up to 4 more rounds (none when
+  ///    `number_of_improvement_rounds` is 0) repair it the same way, except
+  ///    that they split the cluster whose instances fit their S-quad worst
+  ///    (`Tilability_measure::cluster_congruence_errors`).
   ///
   /// A result replaces the best one only if it is better: tilable
   /// (`congruence_tolerance`) before not, then the smaller symmetric
@@ -273,6 +279,8 @@ public:
   /// The mesh, the maps and `optimization()` hold the best result at the
   /// end. Takes the parameters of `optimize()`; the visitor's optional
   /// `phase(name, seconds)` hook is called after each candidate and round.
+  /// Once the visitor stops a solve (`Optimization_result::stopped_by_visitor`),
+  /// no further candidate or round is optimized.
   template <typename CGAL_NP_TEMPLATE_PARAMETERS>
   const Optimization_result& optimize_closest(const CGAL_NP_CLASS& np = parameters::default_values())
   {
@@ -338,25 +346,45 @@ public:
         m_clustering.chosen_candidate = ranked[r];
       }
       internal::notify_phase(visitor, "candidate optimization", timer.time(), 0);
+      if(m_optimization.stopped_by_visitor)
+        break;
     }
+    const bool stopped = m_optimization.stopped_by_visitor;
     set_state(best);
 
-    // 2. Improvement rounds.
-    for(int round = 0; round < rounds && m_number_of_clusters > 1; ++round)
+    // 2. Improvement rounds, and repair rounds while the best is not tilable:
+    // its clustering may have no exact realization near the input (6-sub-lifted,
+    // K = 7: every candidate and a local-global projection stall near 5e-2).
+    // A round that does not improve is not repeated: the next one splits the
+    // next cluster in the order.
+    int rounds_done = 0;
+    std::size_t failed_in_a_row = 0;
+    for(int round = 0; (round < rounds || (rounds > 0 && round < rounds + repair_rounds &&
+                                           !best.optimization.converged)) &&
+                       m_number_of_clusters > 1 && !stopped;
+        ++round)
     {
       timer.reset();
-      if(!improvement_edit(np))
+      if(!improvement_edit(np, failed_in_a_row))
         break;
+      ++rounds_done;
       optimize(np.number_of_iterations(iteration_cap(best, user_iterations)));
       if(internal::is_better(m_optimization, best.optimization))
+      {
         best = state();
+        failed_in_a_row = 0;
+      }
+      else
+        ++failed_in_a_row;
+      const bool round_stopped = m_optimization.stopped_by_visitor;
       set_state(best);
       internal::notify_phase(visitor, "improvement round", timer.time(), 0);
+      if(round_stopped)
+        break;
     }
     m_clustering.choice_reason = "closest result among the " + std::to_string(ranked.size()) +
       " candidates of smallest predicted displacement or length spread, or first segment clusterings, then " +
-      std::to_string(rounds) +
-      " improvement rounds; " + m_clustering.choice_reason;
+      std::to_string(rounds_done) + " improvement or repair rounds; " + m_clustering.choice_reason;
     return m_optimization;
   }
 
@@ -495,11 +523,17 @@ private:
   // start from the input, never from a result.
   void restore_input() { write_points(m_input_points); }
 
+  // Rounds of optimize_closest() beyond the user's that repair a result that
+  // is not tilable.
+  static constexpr int repair_rounds = 4;
+
   // One edit of an improvement round on the current (best) result: split
-  // the cluster that moved most, merge the cheapest pair (see
-  // optimize_closest()), re-tag. False when no edit applies.
+  // the cluster that moved most, or, if the result is not tilable, the one
+  // whose instances fit their S-quad worst (the `rank`-th in that order, 0
+  // first); merge the cheapest pair (see optimize_closest()), re-tag. False
+  // when no edit applies.
   template <typename NP>
-  bool improvement_edit(const NP& np)
+  bool improvement_edit(const NP& np, std::size_t rank)
   {
     const Vertex_index_map vim = CGAL::get_initialized_vertex_index_map(m_mesh);
     std::vector<double> moved(m_number_of_clusters, 0.0);
@@ -512,13 +546,20 @@ private:
       moved[std::size_t(m_cluster[get(m_fim, f)])] += sum;
       ++size[std::size_t(m_cluster[get(m_fim, f)])];
     }
-    std::size_t worst = m_number_of_clusters;
+    const bool repair = !m_optimization.converged;
+    const std::vector<double>& misfit = m_optimization.measure.cluster_congruence_errors;
+    auto badness = [&](std::size_t c) {
+      return repair && c < misfit.size() ? misfit[c] : moved[c] / double(size[c]);
+    };
+    std::vector<std::size_t> splittable;
     for(std::size_t c = 0; c < m_number_of_clusters; ++c)
-      if(size[c] >= 2 && (worst == m_number_of_clusters ||
-                          moved[c] / double(size[c]) > moved[worst] / double(size[worst])))
-        worst = c;
-    if(worst == m_number_of_clusters)
+      if(size[c] >= 2)
+        splittable.push_back(c);
+    if(rank >= splittable.size())
       return false;
+    std::stable_sort(splittable.begin(), splittable.end(),
+                     [&](std::size_t a, std::size_t b) { return badness(a) > badness(b); });
+    const std::size_t worst = splittable[rank];
     restore_input();
     split_cluster(worst);
 

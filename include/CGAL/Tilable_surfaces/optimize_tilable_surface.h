@@ -82,6 +82,9 @@ struct Optimization_result
 {
   /// Iterations performed.
   int iterations = 0;
+  /// Whether the visitor stopped the solver (its `iteration()` returned
+  /// `false`); `make_k_set_tilable()` then optimizes no further candidate.
+  bool stopped_by_visitor = false;
   /// Whether the *measured* congruence error (`measure.congruence_error`)
   /// is at most `congruence_tolerance`; never set from the solver's energy.
   bool converged = false;
@@ -278,6 +281,7 @@ Optimization_result optimize_tilable_surface(PolygonMesh& pm, const CGAL_NP_CLAS
       ? internal::constrained_gauss_newton(setup.input(), settings, X, visitor)
       : internal::polak_ribiere(setup.input(), settings, X, visitor);
   result.iterations = report.iterations;
+  result.stopped_by_visitor = report.stopped_by_visitor;
   result.objective = report.objective;
   result.energy = internal::paper_energy(problem, setup.D, X, X0);
 

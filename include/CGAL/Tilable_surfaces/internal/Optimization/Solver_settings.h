@@ -42,6 +42,7 @@ struct Solver_report
   int iterations = 0;
   double congruence_error = 0; // as measured after the last iteration
   double objective = 0;        // the solver's own objective at the end
+  bool stopped_by_visitor = false;
 };
 
 // Free unknowns: variable[v] is 3 * (rank of v among the free vertices), or

@@ -114,7 +114,10 @@ Solver_report polak_ribiere(const Solver_input& in, const Solver_settings& setti
     report.congruence_error = congruence_error(in.problem, X);
     report.objective = f;
     if(!visitor.iteration(it, report.congruence_error, f))
+    {
+      report.stopped_by_visitor = true;
       break;
+    }
     if(2 * std::abs(f_old - f) <= settings.convergence_tolerance * (std::abs(f_old) + std::abs(f) + 1e-300))
       break;
   }

@@ -343,6 +343,7 @@ Solver_report constrained_gauss_newton(const Solver_input& in, const Solver_sett
     }
     report.iterations = iterations;
   }
+  report.stopped_by_visitor = stopped;
   return report;
 }
 

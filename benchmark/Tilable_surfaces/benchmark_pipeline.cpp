@@ -1,0 +1,183 @@
+// The whole pipeline of make_k_set_tilable() at ~1k, ~10k and ~100k quads.
+//
+// On the seashell parametrization (benchmark_surfaces.h) at K = 100 it prints
+// a markdown table: the time of each phase (validation, clustering, the
+// displacement prediction that ranks the candidate clusterings, their
+// optimization, the improvement rounds), the total, the peak memory, the
+// congruence error, the number of distinct S-quads and the symmetric
+// Hausdorff distance to the input; then the exponent a of a least-squares fit
+// time ~ quads^a over the sizes that finished. The peak memory is the
+// process's high-water mark so far, so it is exact for the largest run only.
+//
+// The optimization is stopped through the visitor once a run has lasted
+// `budget` seconds (default 600); such a row is marked "stopped" and its
+// congruence error is where the solver was.
+//
+// Given mesh files instead, it runs each of them, at K = max(4, faces / 25)
+// unless --k is given (the rule of the issue "Scale and robust exactness").
+//
+// Usage: benchmark_pipeline [--k K] [--max-quads N] [--budget SECONDS] [FILE ...]
+#include "benchmark_surfaces.h"
+
+#include <CGAL/Tilable_surfaces/IO/read_polygon_mesh.h>
+#include <CGAL/Tilable_surfaces/make_k_set_tilable.h>
+
+#include <CGAL/Real_timer.h>
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <iostream>
+#include <algorithm>
+#include <exception>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace TS = CGAL::Tilable_surfaces;
+typedef CGAL::Simple_cartesian<double> Kernel;
+typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
+
+namespace {
+
+// What the visitor records; the pipeline copies its visitor, so the copies
+// share this through a pointer.
+struct Run_record
+{
+  CGAL::Real_timer clock;
+  double budget = 0;
+  bool stopped = false;
+  std::map<std::string, double> phase_seconds; // summed over repeated phases
+};
+
+struct Budget_visitor
+{
+  Run_record* record;
+
+  bool iteration(int, double, double)
+  {
+    if(record->clock.time() > record->budget)
+      record->stopped = true;
+    return !record->stopped;
+  }
+  void phase(const char* name, double seconds) { record->phase_seconds[name] += seconds; }
+};
+
+std::string seconds(const Run_record& r, const char* phase)
+{
+  const auto it = r.phase_seconds.find(phase);
+  if(it == r.phase_seconds.end())
+    return "-";
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f", it->second);
+  return text;
+}
+
+// Slope of the least-squares line through (log x, log y).
+double growth_exponent(const std::vector<double>& x, const std::vector<double>& y)
+{
+  double mx = 0, my = 0;
+  for(std::size_t i = 0; i < x.size(); ++i) { mx += std::log(x[i]); my += std::log(y[i]); }
+  mx /= double(x.size());
+  my /= double(x.size());
+  double sxy = 0, sxx = 0;
+  for(std::size_t i = 0; i < x.size(); ++i)
+  {
+    sxy += (std::log(x[i]) - mx) * (std::log(y[i]) - my);
+    sxx += (std::log(x[i]) - mx) * (std::log(x[i]) - mx);
+  }
+  return sxy / sxx;
+}
+
+} // namespace
+
+// One run of the pipeline on `mesh`, as a table row; false if it was stopped.
+bool run(const std::string& name, Mesh& mesh, std::size_t k, double budget, double& total_time)
+{
+  Run_record record;
+  record.budget = budget;
+  record.clock.start();
+  const TS::K_set_tilable_result r =
+    TS::make_k_set_tilable(mesh, TS::parameters::number_of_tiles(k).visitor(Budget_visitor{&record}));
+  const TS::Tilability_measure& m = r.optimization.measure;
+  char cells[160];
+  std::snprintf(cells, sizeof cells, "%.1f%s | %.0f | %.1e | %zu | %.2f", r.total_time,
+                record.stopped ? " (stopped)" : "", benchmark_surfaces::peak_memory_mb(),
+                m.congruence_error, m.number_of_clusters, 100 * m.hausdorff_distance);
+  std::cout << "| " << name << " | " << mesh.number_of_faces() << " | " << k << " | "
+            << seconds(record, "validation") << " | " << seconds(record, "clustering") << " | "
+            << seconds(record, "displacement prediction") << " | "
+            << seconds(record, "candidate optimization") << " | " << seconds(record, "improvement round")
+            << " | " << cells << " |" << std::endl;
+  total_time = r.total_time;
+  return !record.stopped;
+}
+
+int main(int argc, char** argv)
+{
+  std::size_t k = 0, max_quads = 100000;
+  double budget = 600;
+  std::vector<std::string> files;
+  for(int i = 1; i < argc; ++i)
+  {
+    const std::string arg = argv[i];
+    if(i + 1 < argc && arg == "--k")
+      k = std::stoul(argv[++i]);
+    else if(i + 1 < argc && arg == "--max-quads")
+      max_quads = std::stoul(argv[++i]);
+    else if(i + 1 < argc && arg == "--budget")
+      budget = std::stod(argv[++i]);
+    else if(arg.rfind("--", 0) == 0)
+    {
+      std::cerr << "usage: benchmark_pipeline [--k K] [--max-quads N] [--budget SECONDS] [FILE ...]\n";
+      return EXIT_FAILURE;
+    }
+    else
+      files.push_back(arg);
+  }
+  std::cout << "| surface | quads | K | validation (s) | clustering (s) | prediction (s)"
+               " | candidate optimization (s) | improvement (s) | total (s) | peak memory (MB)"
+               " | congruence | distinct S-quads | Hausdorff (% diag) |\n"
+            << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|\n";
+  for(const std::string& file : files)
+  {
+    const std::string name = file.substr(file.find_last_of('/') + 1);
+    Mesh mesh;
+    try
+    {
+      TS::IO::read_quad_mesh(file, mesh);
+      double seconds_taken = 0;
+      run(name, mesh,
+          k > 0 ? k : (std::max)(std::size_t(4), std::size_t(mesh.number_of_faces()) / 25), budget,
+          seconds_taken);
+    }
+    catch(const std::exception& e)
+    {
+      std::cout << "| " << name << " | refused: " << e.what() << " |\n";
+    }
+  }
+  if(!files.empty())
+    return EXIT_SUCCESS;
+
+  std::vector<double> sizes, times;
+  for(int n : {32, 100, 316})
+  {
+    if(std::size_t(n) * n > max_quads)
+      break;
+    Mesh mesh = benchmark_surfaces::seashell<Mesh>(n);
+    double seconds_taken = 0;
+    if(run("seashell", mesh, k > 0 ? k : 100, budget, seconds_taken))
+    {
+      sizes.push_back(double(mesh.number_of_faces()));
+      times.push_back(seconds_taken);
+    }
+  }
+  if(sizes.size() >= 2)
+    std::cout << "\ntime ~ quads^" << growth_exponent(sizes, times) << " over the " << sizes.size()
+              << " sizes that finished\n";
+  else
+    std::cout << "\nfewer than two sizes finished within the budget: no growth exponent\n";
+  return EXIT_SUCCESS;
+}

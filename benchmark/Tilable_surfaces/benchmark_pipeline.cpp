@@ -26,12 +26,12 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
-#include <iostream>
-#include <algorithm>
 #include <exception>
+#include <iostream>
 #include <map>
 #include <string>
 #include <vector>
@@ -91,8 +91,6 @@ double growth_exponent(const std::vector<double>& x, const std::vector<double>& 
   return sxy / sxx;
 }
 
-} // namespace
-
 // One run of the pipeline on `mesh`, as a table row; false if it was stopped.
 bool run(const std::string& name, Mesh& mesh, std::size_t k, double budget, double& total_time)
 {
@@ -114,6 +112,8 @@ bool run(const std::string& name, Mesh& mesh, std::size_t k, double budget, doub
   total_time = r.total_time;
   return !record.stopped;
 }
+
+} // namespace
 
 int main(int argc, char** argv)
 {

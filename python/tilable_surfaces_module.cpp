@@ -54,6 +54,7 @@ struct Options
   int iterations = -1;
   double congruence_tolerance = 1e-6;
   int threads = 0;
+  bool planar_tiles = false;
 };
 
 [[noreturn]] void invalid(const std::string& message)
@@ -165,6 +166,7 @@ py::dict result_dict(const Mesh& mesh, const TS::K_set_tilable_result& r)
   d["degree_of_flexibility"] = m.degree_of_flexibility;
   d["is_tilable"] = r.is_tilable();
   d["congruence_error"] = m.congruence_error;
+  d["planarity_error"] = m.planarity_error;
   d["cluster_congruence_errors"] = numpy_array(m.cluster_congruence_errors, {k});
   d["cluster_sizes"] =
     numpy_array(std::vector<std::int64_t>(m.cluster_sizes.begin(), m.cluster_sizes.end()), {k});
@@ -221,7 +223,8 @@ py::dict make_k_set_tilable(const py::object& vertices, const py::object& faces,
                 .fairness_weight(o.fairness_weight < 0 ? TS::default_fairness_weight(solver)
                                                        : o.fairness_weight)
                 .solver(solver)
-                .congruence_tolerance(o.congruence_tolerance);
+                .congruence_tolerance(o.congruence_tolerance)
+                .planar_tiles(o.planar_tiles);
     r = o.iterations >= 0 ? TS::make_k_set_tilable(mesh, np.number_of_iterations(o.iterations))
                           : TS::make_k_set_tilable(mesh, np);
   }
@@ -250,12 +253,13 @@ PYBIND11_MODULE(tilable_surfaces, module)
     [](const py::object& vertices, const py::object& faces, int k, unsigned int seed,
        std::size_t number_of_candidates, double similarity_threshold, double flexibility_penalty,
        const std::string& orientation_policy, double distance_weight, double fairness_weight,
-       const std::string& solver, int iterations, double congruence_tolerance, int threads) {
+       const std::string& solver, int iterations, double congruence_tolerance, int threads,
+       bool planar_tiles) {
       return make_k_set_tilable(vertices, faces,
                                 Options{k, seed, number_of_candidates, similarity_threshold,
                                         flexibility_penalty, orientation_policy, distance_weight,
                                         fairness_weight, solver, iterations, congruence_tolerance,
-                                        threads});
+                                        threads, planar_tiles});
     },
     py::arg("vertices"), py::arg("faces"), py::kw_only(), py::arg("k"), py::arg("seed") = Options().seed,
     py::arg("number_of_candidates") = Options().number_of_candidates,
@@ -266,7 +270,7 @@ PYBIND11_MODULE(tilable_surfaces, module)
     py::arg("fairness_weight") = Options().fairness_weight, py::arg("solver") = Options().solver,
     py::arg("iterations") = Options().iterations,
     py::arg("congruence_tolerance") = Options().congruence_tolerance,
-    py::arg("threads") = Options().threads,
+    py::arg("threads") = Options().threads, py::arg("planar_tiles") = Options().planar_tiles,
     R"doc(Makes the quad mesh (vertices, faces) K-set tilable.
 
 vertices: (n, 3) array of float64 coordinates; faces: (m, 4) array of integer vertex
@@ -285,12 +289,14 @@ Keyword arguments (defaults of the C++ named parameters):
   iterations            maximum solver iterations (< 0: the solver's default, 300 or 5000)
   congruence_tolerance  congruence error below which the result is tilable (1e-6)
   threads               threads of the parallel loops (0: all cores); results do not depend on it
+  planar_tiles          every panel planar as well as congruent (gauss-newton only) (False)
 
 Returns a dict: 'vertices' (n, 3) moved positions, 'cluster' (m,) cluster of each face,
 'orientation' (m,) orientation 0..7 of each face (template corner i is face vertex
 (i + o) % 4 for o < 4, (o - i) % 4 for o >= 4), 's_quads' (K, 4, 3), 'is_tilable',
 'congruence_error', 'cluster_congruence_errors', 'cluster_sizes', 'degree_of_flexibility',
-'number_of_clusters', 'mean_edge_length', 'input_bbox_diagonal', 'hausdorff_distance' and
+'number_of_clusters', 'mean_edge_length', 'planarity_error' (the largest distance between the
+diagonals of a face over the mean edge length), 'input_bbox_diagonal', 'hausdorff_distance' and
 'mean_symmetric_distance' (the distance between result and input both ways),
 'max_approximation_error', 'mean_approximation_error' (result to input), 'max_coverage_error',
 'mean_coverage_error' (input to result), all over the input's bounding-box diagonal, 'max_displacement',

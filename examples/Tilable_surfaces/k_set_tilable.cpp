@@ -1,14 +1,19 @@
 // k_set_tilable: the command-line program for architects.
 //
-//   k_set_tilable INPUT -k K -o OUTPUT.ply [--report REPORT.json] [--catalog TILES.csv|TILES.json]
+//   k_set_tilable INPUT (-k K | --max-deviation D [-k KMAX]) -o OUTPUT.ply
+//                 [--report REPORT.json] [--catalog TILES.csv|TILES.json] [--curve CURVE.csv]
 //                 [--components EDGES.ply] [--distance-weight W] [--fairness-weight W]
 //                 [--tangential-weight W] [--optimized-candidates N] [--improvement-rounds N]
 //                 [--candidates N] [--solver gauss-newton|paper-cg] [--fixed-boundary]
-//                 [--iterations N] [--seed S] [--threads N] [--ascii] [--quiet] [--help]
+//                 [--iterations N] [--seed S] [--threads N] [--mirror] [--planar] [--ascii] [--quiet]
+//                 [--help]
+//   k_set_tilable INPUT --sweep KMIN:KMAX[:STEP] --curve CURVE.csv [options]
 //
 // Reads a quad mesh (OFF, OBJ or PLY), makes it K-set tilable, and writes the
 // moved mesh (PLY with per-face cluster, orientation and colour), a JSON
-// report of what was measured, and the tile catalog. Exit codes: 0 done,
+// report of what was measured, and the tile catalog. With --max-deviation,
+// K is the smallest whose result is tilable within D of the input; --sweep
+// writes the K / deviation curve instead of a mesh. Exit codes: 0 done,
 // 2 bad input or arguments (nothing written), 1 internal failure.
 
 #include <CGAL/Simple_cartesian.h>
@@ -21,6 +26,8 @@
 #include <CGAL/Tilable_surfaces/IO/write_OBJ.h>
 #include <CGAL/Tilable_surfaces/IO/write_PLY.h>
 #include <CGAL/Tilable_surfaces/IO/write_edge_components_PLY.h>
+#include <CGAL/Tilable_surfaces/IO/write_tile_count_curve.h>
+#include <CGAL/Tilable_surfaces/k_set_tilable_curve.h>
 #include <CGAL/Tilable_surfaces/make_k_set_tilable.h>
 
 #include <boost/program_options.hpp>
@@ -56,15 +63,17 @@ struct Usage_error : std::runtime_error
 
 struct Options
 {
-  std::string input, output, report, catalog, components;
+  std::string input, output, report, catalog, components, sweep, curve;
   int k = 0;
+  double max_deviation = -1; // negative: K is given
+  std::vector<std::size_t> sweep_k;
   double distance_weight = 1e-4, fairness_weight = -1; // negative: the solver's default
   double tangential_weight = 0.1;
   int optimized_candidates = 0, improvement_rounds = 2; // 0: the package's default
   int candidates = 10, iterations = -1, threads = 0;
   unsigned int seed = 0;
   std::string solver = "gauss-newton";
-  bool fixed_boundary = false, ascii = false, quiet = false;
+  bool fixed_boundary = false, mirror = false, planar = false, ascii = false, quiet = false;
 };
 
 std::string extension(const std::string& path)
@@ -78,16 +87,57 @@ std::string extension(const std::string& path)
   return e;
 }
 
+// KMIN:KMAX[:STEP] as the list of K.
+std::vector<std::size_t> parse_sweep(const std::string& text)
+{
+  long long values[3] = {0, 0, 1};
+  int count = 0;
+  std::istringstream in(text);
+  std::string field;
+  while(std::getline(in, field, ':'))
+  {
+    std::size_t used = 0;
+    try
+    {
+      if(count == 3)
+        throw std::invalid_argument("too many fields");
+      values[count++] = std::stoll(field, &used);
+    }
+    catch(const std::exception&)
+    {
+      used = std::string::npos;
+    }
+    if(used != field.size())
+      throw Usage_error("--sweep '" + text + "' is not KMIN:KMAX[:STEP] with whole numbers");
+  }
+  if(count < 2 || values[0] < 1 || values[1] < values[0] || values[2] < 1)
+    throw Usage_error("--sweep '" + text + "' must be KMIN:KMAX[:STEP] with 1 <= KMIN <= KMAX, STEP >= 1");
+  std::vector<std::size_t> k;
+  for(long long v = values[0]; v <= values[1]; v += values[2]) k.push_back(std::size_t(v));
+  return k;
+}
+
 Options parse(int argc, char** argv, bool& help)
 {
   Options o;
   po::options_description visible(
     "Usage: k_set_tilable INPUT -k K -o OUTPUT.ply [options]\n"
+    "       k_set_tilable INPUT --max-deviation D [-k KMAX] -o OUTPUT.ply [options]\n"
+    "       k_set_tilable INPUT --sweep KMIN:KMAX[:STEP] --curve CURVE.csv [options]\n"
     "Makes the quad mesh INPUT (OFF, OBJ or PLY) tilable by K distinct quad shapes.\nOptions");
   visible.add_options()
     ("help,h", "print this help and exit")
-    ("k,k", po::value<int>(&o.k)->required(), "number K of distinct tiles (S-quads)")
-    ("output,o", po::value<std::string>(&o.output)->required(),
+    ("k,k", po::value<int>(&o.k), "number K of distinct tiles (S-quads); with --max-deviation, "
+     "the largest K tried")
+    ("max-deviation", po::value<double>(&o.max_deviation),
+     "instead of K: the smallest K whose result is tilable within this symmetric Hausdorff "
+     "distance of the input, as a fraction of its bounding-box diagonal (0.01 = 1%)")
+    ("sweep", po::value<std::string>(&o.sweep),
+     "KMIN:KMAX[:STEP]: run every K of the range and write the curve (--curve), no mesh")
+    ("curve", po::value<std::string>(&o.curve),
+     "CSV of the K tried (--sweep or --max-deviation): K, DOF, congruence, Hausdorff distance, "
+     "displacement, time; scripts/plot_curve.sh draws it")
+    ("output,o", po::value<std::string>(&o.output),
      "moved mesh: .ply (with face properties cluster, orientation, red/green/blue), "
      ".obj (a group and a material per tile, OUTPUT.mtl beside it) or .off (geometry only)")
     ("report", po::value<std::string>(&o.report), "JSON report of everything measured")
@@ -113,6 +163,11 @@ Options parse(int argc, char** argv, bool& help)
     ("iterations", po::value<int>(&o.iterations), "maximum solver iterations")
     ("seed", po::value<unsigned int>(&o.seed)->default_value(0), "random seed")
     ("threads", po::value<int>(&o.threads)->default_value(0), "threads (0: all cores)")
+    ("mirror", po::bool_switch(&o.mirror),
+     "a panel may be the mirror image of its mold (cut from the mirrored mold)")
+    ("planar", po::bool_switch(&o.planar),
+     "every panel planar as well as congruent (glass): its diagonals within 1e-6 of the mean edge "
+     "of each other; default solver only")
     ("ascii", po::bool_switch(&o.ascii), "ASCII PLY instead of binary")
     ("quiet,q", po::bool_switch(&o.quiet), "no progress on stderr");
   po::options_description hidden;
@@ -139,8 +194,33 @@ Options parse(int argc, char** argv, bool& help)
     throw Usage_error(e.what());
   }
 
-  if(o.k < 1)
+  if(vm.count("k") && o.k < 1)
     throw Usage_error("-k must be at least 1, got " + std::to_string(o.k));
+  if(vm.count("max-deviation") && !(o.max_deviation >= 0))
+    throw Usage_error("--max-deviation must be >= 0 (a fraction of the bounding-box diagonal)");
+  if(!o.sweep.empty())
+  {
+    o.sweep_k = parse_sweep(o.sweep);
+    if(vm.count("k") || vm.count("max-deviation"))
+      throw Usage_error("--sweep runs its own K: give neither -k nor --max-deviation");
+    if(o.curve.empty())
+      throw Usage_error("--sweep needs --curve CURVE.csv");
+    if(!o.output.empty() || !o.report.empty() || !o.catalog.empty() || !o.components.empty())
+      throw Usage_error("--sweep writes the curve only: no -o, --report, --catalog or --components");
+  }
+  else
+  {
+    if(!vm.count("k") && !vm.count("max-deviation"))
+      throw Usage_error("give -k K, --max-deviation D or --sweep KMIN:KMAX");
+    if(o.output.empty())
+      throw Usage_error("the option '--output' is required but missing");
+    if(!o.curve.empty() && !vm.count("max-deviation"))
+      throw Usage_error("--curve needs --sweep or --max-deviation");
+  }
+  if(!o.curve.empty() && extension(o.curve) != "csv")
+    throw Usage_error("the curve '" + o.curve + "' must end in .csv");
+  if(!o.sweep.empty())
+    return o;
   const std::string out_ext = extension(o.output);
   if(out_ext != "ply" && out_ext != "off" && out_ext != "obj")
     throw Usage_error("the output '" + o.output + "' must end in .ply, .off or .obj");
@@ -152,6 +232,8 @@ Options parse(int argc, char** argv, bool& help)
     throw Usage_error("the components picture '" + o.components + "' must end in .ply");
   if(o.solver != "gauss-newton" && o.solver != "paper-cg")
     throw Usage_error("unknown solver '" + o.solver + "' (gauss-newton or paper-cg)");
+  if(o.planar && o.solver != "gauss-newton")
+    throw Usage_error("--planar needs the default solver (gauss-newton)");
   if(o.candidates < 1)
     throw Usage_error("--candidates must be at least 1");
   if(vm.count("iterations") && o.iterations < 0)
@@ -249,6 +331,24 @@ void check_writable(const std::string& path)
   std::remove(probe.c_str());
 }
 
+// --sweep: the curve file and a table on stderr.
+int write_curve(const Options& o, const std::vector<TS::Tile_count_trial>& trials, const CGAL::Real_timer& timer)
+{
+  Output_files files;
+  files.add(o.curve, [&](std::ostream& out) { return TS::IO::write_tile_count_curve_CSV(out, trials); });
+  files.commit();
+  std::cerr << "[k_set_tilable]    K   DOF  congruence  Hausdorff  displacement  seconds\n";
+  for(const TS::Tile_count_trial& t : trials)
+    std::cerr << "[k_set_tilable] " << std::setw(4) << t.number_of_tiles << std::setw(6)
+              << t.degree_of_flexibility << std::scientific << std::setprecision(2) << std::setw(12)
+              << t.congruence_error << std::fixed << std::setw(10) << 100 * t.hausdorff_distance
+              << "%" << std::scientific << std::setw(14) << t.max_displacement << std::fixed
+              << std::setw(9) << t.seconds << (t.is_tilable ? "" : "  not tilable") << "\n";
+  std::cerr << "[k_set_tilable] curve written to " << o.curve << " in " << std::fixed
+            << std::setprecision(2) << timer.time() << " s\n";
+  return 0;
+}
+
 int run(const Options& o)
 {
 #ifdef CGAL_LINKED_WITH_TBB
@@ -256,7 +356,7 @@ int run(const Options& o)
   if(o.threads > 0)
     threads.reset(new tbb::global_control(tbb::global_control::max_allowed_parallelism, o.threads));
 #endif
-  for(const std::string& path : {o.output, o.report, o.catalog, o.components})
+  for(const std::string& path : {o.output, o.report, o.catalog, o.components, o.curve})
     check_writable(path);
 
   CGAL::Real_timer timer;
@@ -268,7 +368,10 @@ int run(const Options& o)
   progress.phase("reading", timer.time());
   if(!o.quiet)
     std::cerr << "[k_set_tilable] " << o.input << ": " << mesh.number_of_vertices() << " vertices, "
-              << mesh.number_of_faces() << " faces, K = " << o.k << "\n";
+              << mesh.number_of_faces() << " faces, "
+              << (!o.sweep.empty() ? "K = " + o.sweep
+                  : o.max_deviation >= 0 ? "deviation budget " + std::to_string(o.max_deviation)
+                                         : "K = " + std::to_string(o.k)) << "\n";
 
   auto cluster = mesh.add_property_map<Mesh::Face_index, int>("f:ts_cluster", 0).first;
   auto orientation = mesh.add_property_map<Mesh::Face_index, int>("f:ts_orientation", 0).first;
@@ -278,8 +381,7 @@ int run(const Options& o)
 
   const TS::Solver_type solver =
     o.solver == "paper-cg" ? TS::PAPER_CONJUGATE_GRADIENT : TS::CONSTRAINED_GAUSS_NEWTON;
-  auto np = TSP::number_of_tiles(o.k)
-              .face_cluster_map(cluster)
+  auto np = TSP::face_cluster_map(cluster)
               .face_orientation_map(orientation)
               .vertex_is_constrained_map(fixed)
               .distance_weight(o.distance_weight)
@@ -293,10 +395,16 @@ int run(const Options& o)
               .number_of_candidates(std::size_t(o.candidates))
               .solver(solver)
               .random_seed(o.seed)
+              .orientation_policy(o.mirror ? TS::ALLOW_MIRRORED_PANELS : TS::PROPER_RIGID_MOTIONS)
+              .planar_tiles(o.planar)
+              .number_of_iterations(o.iterations >= 0 ? o.iterations : TS::default_number_of_iterations(solver))
               .visitor(progress);
-  TS::K_set_tilable_result result = o.iterations >= 0
-    ? TS::make_k_set_tilable(mesh, np.number_of_iterations(o.iterations))
-    : TS::make_k_set_tilable(mesh, np);
+  if(!o.sweep.empty())
+    return write_curve(o, TS::k_set_tilable_curve(mesh, o.sweep_k, np), timer);
+  const int largest_k = o.k > 0 ? o.k : int(num_faces(mesh));
+  TS::K_set_tilable_result result = o.max_deviation >= 0
+    ? TS::make_k_set_tilable(mesh, np.max_deviation(o.max_deviation).number_of_tiles(largest_k))
+    : TS::make_k_set_tilable(mesh, np.number_of_tiles(o.k));
 
   CGAL::Real_timer write_timer;
   write_timer.start();
@@ -343,13 +451,19 @@ int run(const Options& o)
                                                TSP::use_binary_mode(!o.ascii));
     });
   }
+  if(!o.curve.empty())
+    files.add(o.curve, [&](std::ostream& out) { return TS::IO::write_tile_count_curve_CSV(out, result.trials); });
   if(!o.report.empty())
   {
     nlohmann::json report = TS::IO::tilability_report_json(result);
     report["input"] = {{"file", o.input},
                        {"vertices", input.number_of_vertices()},
                        {"faces", input.number_of_faces()}};
-    report["parameters"] = {{"K", o.k},
+    report["parameters"] = {{"K", o.k > 0 ? nlohmann::json(o.k) : nlohmann::json(nullptr)},
+                            {"max_deviation", o.max_deviation >= 0 ? nlohmann::json(o.max_deviation)
+                                                                   : nlohmann::json(nullptr)},
+                            {"mirror", o.mirror},
+                            {"planar", o.planar},
                             {"distance_weight", o.distance_weight},
                             {"fairness_weight", o.fairness_weight < 0
                                                   ? TS::default_fairness_weight(solver)
@@ -382,9 +496,33 @@ int run(const Options& o)
             << m.in_input_edge_lengths(m.hausdorff_distance) << " edge lengths), displacement max "
             << m.max_displacement << ", " << std::defaultfloat
             << std::fixed << std::setprecision(2) << timer.time() << " s\n";
+  if(o.max_deviation >= 0)
+  {
+    std::cerr << "[k_set_tilable] K tried:";
+    for(const TS::Tile_count_trial& t : result.trials)
+      std::cerr << " " << t.number_of_tiles << (t.meets(o.max_deviation) ? " (within," : " (missed,")
+                << std::defaultfloat << std::setprecision(3) << " " << 100 * t.hausdorff_distance << "%)";
+    const bool met = !result.trials.empty() && std::any_of(result.trials.begin(), result.trials.end(),
+      [&](const TS::Tile_count_trial& t) { return t.meets(o.max_deviation); });
+    std::cerr << "\n[k_set_tilable] " << (met ? "smallest K within the budget: "
+                                             : "WARNING: no K up to the largest tried meets the budget; result at K = ")
+              << m.number_of_clusters << "\n";
+  }
+  if(m.requires_planar_tiles)
+    std::cerr << "[k_set_tilable] planar panels: the diagonals of every face are within "
+              << std::scientific << std::setprecision(2) << m.planarity_error
+              << " mean edge lengths of each other\n" << std::defaultfloat;
+  if(m.allows_mirrored_panels)
+  {
+    std::size_t mirrored = 0;
+    for(std::size_t c : m.cluster_mirrored_counts) mirrored += c;
+    std::cerr << "[k_set_tilable] " << mirrored << " of " << num_faces(mesh)
+              << " panels are cut from a mirrored mold\n";
+  }
   if(!result.is_tilable())
-    std::cerr << "[k_set_tilable] WARNING: not every panel fits its mold within 1e-6 of the mean "
-                 "edge length; see the report's per-cluster congruence errors\n";
+    std::cerr << "[k_set_tilable] WARNING: not every panel fits its mold "
+              << (m.requires_planar_tiles ? "and is planar " : "")
+              << "within 1e-6 of the mean edge length; see the report's per-cluster congruence errors\n";
   return 0;
 }
 

@@ -201,6 +201,54 @@ TEST(CommandLine, ObjOutputKeepsTheTilesWithItsMaterialLibrary)
   for(int c = 0; c < k; ++c) EXPECT_EQ(materials[std::size_t(c)].name, "tile_" + std::to_string(c));
 }
 
+// --sweep writes one CSV row per K of the range and no mesh; --max-deviation
+// reports every K tried, and the K it chose met the budget while K - 1,
+// tried too, did not; --mirror says how many panels use a mirrored mold.
+TEST(CommandLine, SweepDeviationBudgetAndMirroredMolds)
+{
+  const Temp_dir dir("cli_sweep");
+  const std::string saddle = data_dir + "/monkey_saddle.off";
+  const Run_result sweep = run(saddle + " --sweep 2:6:2 --curve " + (dir / "curve.csv").string());
+  ASSERT_EQ(sweep.exit_code, 0) << sweep.output;
+  std::ifstream curve_in(dir / "curve.csv");
+  std::string line;
+  std::getline(curve_in, line);
+  EXPECT_EQ(csv_cells(line)[0], "K");
+  std::vector<std::size_t> ks;
+  while(std::getline(curve_in, line)) ks.push_back(std::stoul(csv_cells(line)[0]));
+  EXPECT_EQ(ks, (std::vector<std::size_t>{2, 4, 6}));
+  EXPECT_EQ(std::distance(fs::directory_iterator(dir), fs::directory_iterator()), 1) << "the curve only";
+
+  const double budget = 0.28;
+  const Run_result search = run(saddle + " --max-deviation " + std::to_string(budget) + " -k 12 -o " +
+                                (dir / "out.ply").string() + " --report " + (dir / "r.json").string() +
+                                " --mirror --quiet");
+  ASSERT_EQ(search.exit_code, 0) << search.output;
+  EXPECT_NE(search.output.find("cut from a mirrored mold"), std::string::npos) << search.output;
+  std::ifstream report_in(dir / "r.json");
+  const nlohmann::json report = nlohmann::json::parse(report_in);
+  const std::size_t k = report["K"].get<std::size_t>();
+  EXPECT_TRUE(report["mirrored_panels"]["allowed"].get<bool>());
+  EXPECT_EQ(report["parameters"]["max_deviation"].get<double>(), budget);
+  std::map<std::size_t, double> tried;
+  for(const auto& t : report["tried_K"])
+  {
+    EXPECT_LE(t["K"].get<std::size_t>(), 12u);
+    if(t["tilable"].get<bool>())
+      tried[t["K"].get<std::size_t>()] = t["hausdorff_distance"].get<double>();
+    else
+      tried[t["K"].get<std::size_t>()] = 1e9;
+  }
+  ASSERT_TRUE(tried.count(k));
+  EXPECT_LE(tried[k], budget);
+  EXPECT_LE(report["fidelity"]["hausdorff"]["max"].get<double>(), budget);
+  if(k > 1)
+  {
+    ASSERT_TRUE(tried.count(k - 1)) << "K - 1 was tried";
+    EXPECT_GT(tried[k - 1], budget);
+  }
+}
+
 TEST(CommandLine, HelpExitsZero)
 {
   const Run_result r = run("--help");
@@ -226,6 +274,16 @@ TEST(CommandLine, BadInputsExitWithCodeTwoAndWriteNothing)
   expect_refused(dir, saddle + " -k 3 -o " + (dir / "out.stl").string(), ".ply, .off or .obj");
   expect_refused(dir, saddle + " -k 3 -o " + (dir / "no_such_dir" / "out.ply").string(),
                  "cannot create");
+  expect_refused(dir, saddle + out, "give -k K, --max-deviation D or --sweep");
+  expect_refused(dir, saddle + " --max-deviation -0.1" + out, "--max-deviation must be >= 0");
+  expect_refused(dir, saddle + " --sweep 5:3 --curve " + (dir / "c.csv").string(), "KMIN:KMAX");
+  expect_refused(dir, saddle + " --sweep 1:x --curve " + (dir / "c.csv").string(), "whole numbers");
+  expect_refused(dir, saddle + " --sweep 1:3", "--sweep needs --curve");
+  expect_refused(dir, saddle + " --sweep 1:3 --curve " + (dir / "c.csv").string() + out,
+                 "writes the curve only");
+  expect_refused(dir, saddle + " --sweep 1:101 --curve " + (dir / "c.csv").string(), "out of range");
+  expect_refused(dir, saddle + " -k 3 --curve " + (dir / "c.csv").string() + out,
+                 "--curve needs --sweep or --max-deviation");
 }
 
 // The three files of issue 11 that were mishandled: a 28-byte OFF claiming

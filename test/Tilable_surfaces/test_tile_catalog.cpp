@@ -24,6 +24,7 @@ TS::IO::Tile lifted_square(double h)
   t.instance_count = 17;
   t.corners = TS::Quad{{Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(1, 1, 0), Vector3d(0, 1, h)}};
   t.worst_deviation = 2.5e-7;
+  t.mirrored_count = 5;
   return t;
 }
 
@@ -41,7 +42,7 @@ TEST(TileCatalog, CsvHasTheHandComputedValues)
   std::getline(in, row);
   std::getline(in, flat);
   const std::vector<std::string> names = csv_cells(header), cells = csv_cells(row);
-  ASSERT_EQ(names.size(), 23u);
+  ASSERT_EQ(names.size(), 25u);
   ASSERT_EQ(cells.size(), names.size());
   auto value = [&](const std::string& name) {
     for(std::size_t i = 0; i < names.size(); ++i)
@@ -51,6 +52,7 @@ TEST(TileCatalog, CsvHasTheHandComputedValues)
   };
   EXPECT_EQ(value("id"), 3);
   EXPECT_EQ(value("instances"), 17);
+  EXPECT_EQ(value("mirrored"), 5);
   EXPECT_EQ(value("t3z"), h);
   EXPECT_EQ(value("e01"), 1.0);
   EXPECT_EQ(value("e12"), 1.0);
@@ -61,7 +63,10 @@ TEST(TileCatalog, CsvHasTheHandComputedValues)
   EXPECT_DOUBLE_EQ(value("signed_volume"), h / 6);
   EXPECT_DOUBLE_EQ(value("planarity"), h);
   EXPECT_EQ(value("worst_deviation"), 2.5e-7);
-  EXPECT_EQ(std::stod(csv_cells(flat)[names.size() - 2]), 0.0) << "a flat tile has planarity 0";
+  // The diagonals (0,0,0)-(1,1,0) and (1,0,0)-(0,1,h) are h / sqrt(2 h^2 + 4) apart.
+  EXPECT_EQ(value("planar"), 0) << "diagonals 0.24 apart";
+  EXPECT_EQ(std::stod(csv_cells(flat)[names.size() - 3]), 0.0) << "a flat tile has planarity 0";
+  EXPECT_EQ(csv_cells(flat)[names.size() - 2], "1") << "and is planar";
 }
 
 TEST(TileCatalog, JsonParsesBackWithTheSameNumbers)
@@ -80,5 +85,7 @@ TEST(TileCatalog, JsonParsesBackWithTheSameNumbers)
   EXPECT_DOUBLE_EQ(t["diagonals"][1].get<double>(), std::sqrt(2 + h * h));
   EXPECT_DOUBLE_EQ(t["signed_volume"].get<double>(), h / 6);
   EXPECT_DOUBLE_EQ(t["planarity"].get<double>(), h);
+  EXPECT_FALSE(t["planar"].get<bool>());
+  EXPECT_EQ(t["mirrored"].get<std::size_t>(), 5u);
   EXPECT_EQ(t["worst_deviation"].get<double>(), 2.5e-7);
 }

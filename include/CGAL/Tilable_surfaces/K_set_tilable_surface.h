@@ -139,21 +139,24 @@ public:
   const Clustering_result& cluster(const CGAL_NP_CLASS& np)
   {
     restore_input();
+    m_policy = internal::orientation_policy(np);
     m_clustering = cluster_quads(m_mesh, with_own_maps(np));
     m_number_of_clusters = m_clustering.cluster_sizes.size();
     m_is_clustered = true;
-    m_policy = internal::orientation_policy(np);
     m_similarity_threshold = parameters::choose_parameter(
       parameters::get_parameter(np, internal_np::similarity_threshold), 0.01);
     return m_clustering;
   }
 
   /// Uses the clustering of the maps `face_cluster_map` (ids 0..K-1, all
-  /// used) and `face_orientation_map` (0..7) instead of computing one.
+  /// used) and `face_orientation_map` (0..7) instead of computing one; its
+  /// instances match their S-quads under `policy`, which the edits, solves
+  /// and measurements then use as `cluster()`'s own.
   /// \throws Invalid_input if an id or an orientation is out of range or a
   /// cluster id in 0..K-1 is unused.
   template <typename FaceClusterMap, typename FaceOrientationMap>
-  void set_clustering(FaceClusterMap face_cluster_map, FaceOrientationMap face_orientation_map)
+  void set_clustering(FaceClusterMap face_cluster_map, FaceOrientationMap face_orientation_map,
+                      Orientation_policy policy = PROPER_RIGID_MOTIONS)
   {
     std::vector<int> cluster(m_cluster.size()), orientation(m_orientation.size());
     std::size_t k = 0;
@@ -178,6 +181,7 @@ public:
     m_number_of_clusters = k;
     m_clustering = Clustering_result();
     m_is_clustered = true;
+    m_policy = policy;
   }
 
   /// Whether a clustering exists (`cluster()` or `set_clustering()`).
@@ -289,9 +293,7 @@ public:
     require_clustering();
     if(m_clustering.candidates.empty())
       return optimize(np);
-    typedef typename CGAL::internal_np::Lookup_named_param_def<
-      CGAL::internal_np::visitor_t, CGAL_NP_CLASS, Default_optimization_visitor>::type Visitor;
-    Visitor visitor = choose_parameter<Visitor>(get_parameter(np, CGAL::internal_np::visitor));
+    auto visitor = internal::visitor_of(np);
     const std::size_t optimized = (std::max)(std::size_t(1), std::size_t(choose_parameter(
       get_parameter(np, internal_np::number_of_optimized_candidates),
       default_number_of_optimized_candidates(num_faces(m_mesh)))));
@@ -310,8 +312,8 @@ public:
       by_prediction.push_back({candidate.predicted_displacement, i});
       by_spread.push_back({candidate.length_deviation, i});
     }
-    const int user_iterations =
-      choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations), 300);
+    const int user_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
+                                                 default_number_of_iterations(CONSTRAINED_GAUSS_NEWTON));
     std::sort(by_prediction.begin(), by_prediction.end());
     std::sort(by_spread.begin(), by_spread.end());
     std::vector<std::size_t> ranked;
@@ -466,6 +468,7 @@ public:
     {
       tiles[c].id = c;
       tiles[c].instance_count = m.cluster_sizes[c];
+      tiles[c].mirrored_count = m.cluster_mirrored_counts[c];
       tiles[c].corners = m.s_quads[c];
       tiles[c].worst_deviation = m.cluster_congruence_errors[c] * m.mean_edge_length;
     }
@@ -602,16 +605,20 @@ private:
     return true;
   }
 
-  // The parameters every step shares: the object's maps and indices.
+  // The parameters every step shares: the object's maps and indices, and the
+  // orientation policy of the clustering, so that edits, solves and
+  // measurements match instances to S-quads as it did.
   auto own_maps()
   {
     return parameters::vertex_point_map(m_vpm)
       .face_index_map(m_fim)
       .face_cluster_map(face_cluster_map())
-      .face_orientation_map(face_orientation_map());
+      .face_orientation_map(face_orientation_map())
+      .orientation_policy(m_policy);
   }
 
-  // The user's parameters with the object's maps in front (found first).
+  // The user's parameters with the object's maps in front (found first); the
+  // user's orientation policy, if given, else the clustering's.
   template <typename NP>
   auto with_own_maps(const NP& np)
   {
@@ -619,7 +626,9 @@ private:
       .vertex_point_map(m_vpm)
       .face_index_map(m_fim)
       .face_cluster_map(face_cluster_map())
-      .face_orientation_map(face_orientation_map());
+      .face_orientation_map(face_orientation_map())
+      .orientation_policy(parameters::choose_parameter(
+        parameters::get_parameter(np, internal_np::orientation_policy), m_policy));
   }
 
   void require_clustering() const

@@ -5,17 +5,40 @@
 #define CGAL_TILABLE_SURFACES_MAKE_K_SET_TILABLE_H
 
 /// \file make_k_set_tilable.h
-/// The one-call function: validate, cluster, optimize, measure.
+/// The one-call function: validate, cluster, optimize, measure; at a given K,
+/// or at the smallest K within a deviation budget.
 
 #include <CGAL/Tilable_surfaces/K_set_tilable_surface.h>
+#include <CGAL/Tilable_surfaces/internal/Search/smallest_passing_tile_count.h>
 
 #include <CGAL/Real_timer.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
+#include <boost/property_map/property_map.hpp>
+
+#include <algorithm>
 #include <vector>
 
 namespace CGAL {
 namespace Tilable_surfaces {
+
+/// \ingroup PkgTilableSurfacesRef
+/// One K tried by the deviation search of `make_k_set_tilable()` or by
+/// `k_set_tilable_curve()`: what the whole pipeline gave at that K.
+struct Tile_count_trial
+{
+  std::size_t number_of_tiles = 0;        ///< K
+  std::size_t degree_of_flexibility = 0;  ///< DOF of the result's clustering
+  double congruence_error = 0;            ///< of the result, relative to its mean edge length
+  /// Symmetric Hausdorff distance of the result to the input, relative to
+  /// the input's bounding-box diagonal.
+  double hausdorff_distance = 0;
+  double max_displacement = 0;            ///< largest vertex displacement, mesh units
+  double seconds = 0;                     ///< time of this K's clustering and optimization
+  bool is_tilable = false;                ///< congruence within `congruence_tolerance`
+  /// Whether this K is tilable within the deviation budget `max_deviation`.
+  bool meets(double max_deviation) const { return is_tilable && hausdorff_distance <= max_deviation; }
+};
 
 /// \ingroup PkgTilableSurfacesRef
 /// What `make_k_set_tilable()` did and measured.
@@ -29,6 +52,9 @@ struct K_set_tilable_result
   Optimization_result optimization;
   /// The tile catalog of the result (one S-quad per cluster, mesh units).
   std::vector<IO::Tile> tiles;
+  /// With `max_deviation`: every K tried, in the order tried (empty when K
+  /// was given).
+  std::vector<Tile_count_trial> trials;
   double validation_time = 0;  ///< seconds spent checking the input
   double clustering_time = 0;  ///< seconds spent clustering
   double total_time = 0;       ///< seconds in total
@@ -51,6 +77,110 @@ void copy_face_output(const PolygonMesh& pm, OutputMap output, Map map)
     put(output, f, Value(get(map, f)));
 }
 
+// The clustering and optimization of make_k_set_tilable() at the K of `np`.
+template <typename Surface, typename NamedParameters, typename Visitor>
+void cluster_and_optimize(Surface& surface, const NamedParameters& np, Visitor& visitor,
+                          K_set_tilable_result& result)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  CGAL::Real_timer phase;
+  phase.start();
+  result.clustering = surface.cluster(np);
+  result.clustering_time = phase.time();
+  notify_phase(visitor, "clustering", result.clustering_time, 0);
+
+  const bool paper_method = choose_parameter(get_parameter(np, internal_np::solver),
+                                            CONSTRAINED_GAUSS_NEWTON) == PAPER_CONJUGATE_GRADIENT;
+  result.optimization = paper_method ? surface.optimize(np) : surface.optimize_closest(np);
+  result.clustering = surface.clustering();
+  result.tiles = surface.tile_catalog(result.optimization.measure);
+  notify_phase(visitor, "optimization",
+               result.optimization.setup_time + result.optimization.solve_time +
+                 result.optimization.measure_time, 0);
+}
+
+inline Tile_count_trial tile_count_trial(const K_set_tilable_result& r, double seconds)
+{
+  const Tilability_measure& m = r.optimization.measure;
+  Tile_count_trial t;
+  t.number_of_tiles = m.number_of_clusters;
+  t.degree_of_flexibility = m.degree_of_flexibility;
+  t.congruence_error = m.congruence_error;
+  t.hausdorff_distance = m.hausdorff_distance;
+  t.max_displacement = m.max_displacement;
+  t.seconds = seconds;
+  t.is_tilable = r.is_tilable();
+  return t;
+}
+
+// The deviation search of make_k_set_tilable(): the smallest K, at most the
+// `number_of_tiles` of `np` (default: the number of faces), whose result is
+// tilable within `max_deviation`; else the result at the largest K tried.
+// The mesh and the output maps get the result returned.
+template <typename PolygonMesh, typename Surface, typename VertexPointMap,
+          typename NamedParameters, typename Visitor>
+K_set_tilable_result search_tile_count(PolygonMesh& pm, Surface& surface, VertexPointMap vpm,
+                                       const NamedParameters& np, Visitor& visitor)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  const double budget = get_parameter(np, internal_np::max_deviation);
+  if(!(budget >= 0))
+    throw Invalid_input("max_deviation is " + std::to_string(budget) + ", it must be >= 0",
+                        Invalid_input::PARAMETER);
+  const std::size_t n = num_faces(pm);
+  const long long largest = choose_parameter(get_parameter(np, internal_np::number_of_tiles), (long long)(n));
+  if(largest < 1)
+    throw Invalid_input("number_of_tiles (the largest K tried) is " + std::to_string(largest) +
+                        ", it must be at least 1", Invalid_input::PARAMETER);
+  const std::size_t k_max = (std::min)(n, std::size_t(largest));
+
+  // The smallest K that meets the budget; until one does, the largest K.
+  K_set_tilable_result kept;
+  bool kept_meets = false;
+  std::vector<typename boost::property_traits<VertexPointMap>::value_type> kept_points;
+  std::vector<int> kept_cluster(n), kept_orientation(n);
+  const auto fim = CGAL::get_initialized_face_index_map(pm);
+  std::vector<Tile_count_trial> trials;
+  bool stopped = false;
+  auto passes = [&](std::size_t k) {
+    if(stopped)
+      return false; // the visitor ended the search: nothing more is tried
+    CGAL::Real_timer timer;
+    timer.start();
+    K_set_tilable_result r;
+    cluster_and_optimize(surface, parameters::extend(np).number_of_tiles(int(k)), visitor, r);
+    trials.push_back(tile_count_trial(r, timer.time()));
+    stopped = r.optimization.stopped_by_visitor;
+    const bool meets = trials.back().meets(budget);
+    const std::size_t kept_k = kept_points.empty() ? 0 : kept.optimization.measure.number_of_clusters;
+    if(kept_points.empty() || (meets && (!kept_meets || k < kept_k)) || (!meets && !kept_meets && k > kept_k))
+    {
+      kept = r;
+      kept_meets = meets;
+      kept_points.clear();
+      for(auto v : vertices(pm)) kept_points.push_back(get(vpm, v));
+      for(auto f : faces(pm))
+      {
+        kept_cluster[get(fim, f)] = get(surface.face_cluster_map(), f);
+        kept_orientation[get(fim, f)] = get(surface.face_orientation_map(), f);
+      }
+    }
+    return meets;
+  };
+  smallest_passing_tile_count((std::max)(std::size_t(2), n / 25), k_max, passes);
+
+  auto point = kept_points.begin();
+  for(auto v : vertices(pm)) put(vpm, v, *point++);
+  copy_face_output(pm, get_parameter(np, internal_np::face_cluster),
+                   boost::make_iterator_property_map(kept_cluster.begin(), fim));
+  copy_face_output(pm, get_parameter(np, internal_np::face_orientation),
+                   boost::make_iterator_property_map(kept_orientation.begin(), fim));
+  kept.trials = trials;
+  return kept;
+}
+
 } // namespace internal
 
 /// \ingroup PkgTilableSurfacesRef
@@ -66,7 +196,19 @@ void copy_face_output(const PolygonMesh& pm, OutputMap output, Map map)
 /// assumed: see `K_set_tilable_result::is_tilable()`.
 ///
 /// \cgalNamedParamsBegin
-///   \cgalParamNBegin{number_of_tiles} K, required. \cgalParamNEnd
+///   \cgalParamNBegin{number_of_tiles} K; required unless `max_deviation` is
+///     given, and then the largest K tried (default: the number of faces). \cgalParamNEnd
+///   \cgalParamNBegin{max_deviation} a deviation budget instead of K: the
+///     largest symmetric Hausdorff distance to the input allowed, as a
+///     fraction of its bounding-box diagonal (`Tilability_measure::hausdorff_distance`).
+///     K is then the smallest whose result is tilable within it: galloped
+///     from max(2, faces / 25) by halving or doubling, then bisected, each
+///     K run once through the whole pipeline on the object validated once
+///     (`K_set_tilable_result::trials`). The K returned met the budget and
+///     K - 1 was tried and missed it (or K = 1); a smaller K may still meet
+///     it where the deviation is not monotone in K. If no K up to the
+///     largest does, the result is that of the largest K tried. A visitor
+///     that stops a solve ends the search. \cgalParamNEnd
 ///   \cgalParamNBegin{face_cluster_map} optional output: cluster id 0..K-1 of
 ///     every face. \cgalParamNEnd
 ///   \cgalParamNBegin{face_orientation_map} optional output: orientation 0..7 of
@@ -88,38 +230,30 @@ K_set_tilable_result make_k_set_tilable(PolygonMesh& pm, const CGAL_NP_CLASS& np
   using parameters::choose_parameter;
   using parameters::get_parameter;
   typedef typename CGAL::GetVertexPointMap<PolygonMesh, CGAL_NP_CLASS>::type Vertex_point_map;
-
-  typedef typename CGAL::internal_np::Lookup_named_param_def<
-    CGAL::internal_np::visitor_t, CGAL_NP_CLASS, Default_optimization_visitor>::type Visitor;
-  Visitor visitor = choose_parameter<Visitor>(get_parameter(np, CGAL::internal_np::visitor));
+  auto visitor = internal::visitor_of(np);
 
   K_set_tilable_result result;
-  CGAL::Real_timer total, phase;
+  CGAL::Real_timer total;
   total.start();
-  phase.start();
-  K_set_tilable_surface<PolygonMesh, Vertex_point_map> surface(
-    pm, choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                         get_property_map(CGAL::vertex_point, pm)));
-  result.validation_time = phase.time();
-  internal::notify_phase(visitor, "validation", result.validation_time, 0);
+  const Vertex_point_map surface_vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                                        get_property_map(CGAL::vertex_point, pm));
+  K_set_tilable_surface<PolygonMesh, Vertex_point_map> surface(pm, surface_vpm);
+  const double validation_time = total.time();
+  internal::notify_phase(visitor, "validation", validation_time, 0);
 
-  phase.reset();
-  result.clustering = surface.cluster(np);
-  result.clustering_time = phase.time();
-  internal::notify_phase(visitor, "clustering", result.clustering_time, 0);
-
-  const bool paper_method = choose_parameter(get_parameter(np, internal_np::solver),
-                                            CONSTRAINED_GAUSS_NEWTON) == PAPER_CONJUGATE_GRADIENT;
-  result.optimization = paper_method ? surface.optimize(np) : surface.optimize_closest(np);
-  result.clustering = surface.clustering();
-  result.tiles = surface.tile_catalog(result.optimization.measure);
-  internal::notify_phase(visitor, "optimization",
-                         result.optimization.setup_time + result.optimization.solve_time +
-                           result.optimization.measure_time, 0);
-
-  internal::copy_face_output(pm, get_parameter(np, internal_np::face_cluster), surface.face_cluster_map());
-  internal::copy_face_output(pm, get_parameter(np, internal_np::face_orientation),
-                             surface.face_orientation_map());
+  if constexpr(!parameters::is_default_parameter<CGAL_NP_CLASS, internal_np::max_deviation_t>::value)
+  {
+    result = internal::search_tile_count(pm, surface, surface_vpm, np, visitor);
+    result.validation_time = validation_time;
+  }
+  else
+  {
+    result.validation_time = validation_time;
+    internal::cluster_and_optimize(surface, np, visitor, result);
+    internal::copy_face_output(pm, get_parameter(np, internal_np::face_cluster), surface.face_cluster_map());
+    internal::copy_face_output(pm, get_parameter(np, internal_np::face_orientation),
+                               surface.face_orientation_map());
+  }
   result.total_time = total.time();
   return result;
 }

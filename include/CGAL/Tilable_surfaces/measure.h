@@ -37,16 +37,31 @@ struct Tilability_measure
   /// The congruence error (method notes §1): the worst cluster's error.
   double congruence_error = 0;
   /// Per cluster: the largest corner deviation of an instance from the
-  /// S-quad after the best proper rigid fit of the S-quad onto it, divided
-  /// by `mean_edge_length`.
+  /// S-quad after the best proper rigid fit of the S-quad onto it (or the
+  /// best improper one if closer, see `allows_mirrored_panels`), divided by
+  /// `mean_edge_length`.
   std::vector<double> cluster_congruence_errors;
   /// Per cluster: its number of instances (faces).
   std::vector<std::size_t> cluster_sizes;
+  /// Whether instances could be mirror images of their S-quad
+  /// (`orientation_policy` `ALLOW_MIRRORED_PANELS`): the fits above are then
+  /// proper or improper, whichever is closer.
+  bool allows_mirrored_panels = false;
+  /// Per cluster: the instances whose best fit is a mirror, made from the
+  /// mirror image of the mold; all 0 unless `allows_mirrored_panels`, and 0
+  /// for a planar S-quad, whose mold is its own mirror image.
+  std::vector<std::size_t> cluster_mirrored_counts;
   /// Per cluster: the S-quad, the generalized Procrustes mean of its
   /// instances (each in the template's labelling) under proper rigid motions,
   /// in mesh units and in a canonical frame: t0 at the origin, t1 on the +x
   /// axis, t2 in the xy plane with y >= 0. Zeros for a cluster without faces.
   std::vector<Quad> s_quads;
+  /// The largest distance between the two diagonals of a face of the result,
+  /// divided by `mean_edge_length`: 0 when every panel is planar.
+  double planarity_error = 0;
+  /// Whether planar panels were required (`planar_tiles`); then
+  /// `planarity_error` is held to the congruence tolerance as well.
+  bool requires_planar_tiles = false;
   /// Mean edge length of the result, the length scale of the congruence error.
   double mean_edge_length = 0;
   /// Bounding-box diagonal of the input, the length scale of the
@@ -111,12 +126,17 @@ inline Tilability_measure measure_tilability(const Tilable_problem& problem,
   const Cluster_congruence congruence = cluster_congruence(problem, result);
   m.mean_edge_length = mean_edge_length(problem, result);
   m.cluster_sizes = congruence.sizes;
+  m.allows_mirrored_panels = problem.allow_mirror;
+  m.requires_planar_tiles = problem.planar;
+  m.cluster_mirrored_counts = congruence.mirrored;
   m.s_quads = congruence.s_quads;
   for(double e : congruence.errors)
   {
     m.cluster_congruence_errors.push_back(e / m.mean_edge_length);
     m.congruence_error = (std::max)(m.congruence_error, m.cluster_congruence_errors.back());
   }
+
+  m.planarity_error = worst_diagonal_distance(problem, result) / m.mean_edge_length;
 
   const Eigen::RowVector3d extent = input.colwise().maxCoeff() - input.colwise().minCoeff();
   m.input_bbox_diagonal = extent.norm();
@@ -163,6 +183,9 @@ inline Tilability_measure measure_tilability(const Tilable_problem& problem,
 ///   \cgalParamNBegin{vertex_point_map} points of `result` \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_index_map} indices pairing the vertices of the
 ///     two meshes \cgalParamNEnd
+///   \cgalParamNBegin{orientation_policy} with `ALLOW_MIRRORED_PANELS`, an
+///     instance may fit its S-quad by an improper motion; default
+///     `PROPER_RIGID_MOTIONS` \cgalParamNEnd
 ///   \cgalParamNBegin{feature_angle} dihedral angle in degrees above which an
 ///     edge of `input` is a sharp feature, for F_f; default 60 \cgalParamNEnd
 ///   \cgalParamNBegin{edge_is_constrained_map} feature edges, replacing the

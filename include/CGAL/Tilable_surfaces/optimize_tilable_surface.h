@@ -86,7 +86,8 @@ struct Optimization_result
   /// `false`); `make_k_set_tilable()` then optimizes no further candidate.
   bool stopped_by_visitor = false;
   /// Whether the *measured* congruence error (`measure.congruence_error`)
-  /// is at most `congruence_tolerance`; never set from the solver's energy.
+  /// is at most `congruence_tolerance`, and with `planar_tiles` the measured
+  /// `measure.planarity_error` too; never set from the solver's energy.
   bool converged = false;
   /// The paper's five terms at the result, on positions normalized like the
   /// solver's (centred, unit bounding-box diagonal of the input).
@@ -113,7 +114,24 @@ inline double default_fairness_weight(Solver_type solver)
   return solver == CONSTRAINED_GAUSS_NEWTON ? 1e-6 : 1e-4;
 }
 
+/// \ingroup PkgTilableSurfacesRef
+/// The default of `number_of_iterations` for `solver`: 300 Gauss-Newton
+/// iterations, or 5000 of the paper's conjugate gradient.
+inline int default_number_of_iterations(Solver_type solver)
+{
+  return solver == CONSTRAINED_GAUSS_NEWTON ? 300 : 5000;
+}
+
 namespace internal {
+
+// The visitor of `np`, or a `Default_optimization_visitor`: a copy.
+template <typename NamedParameters>
+auto visitor_of(const NamedParameters& np)
+{
+  typedef typename CGAL::internal_np::Lookup_named_param_def<
+    CGAL::internal_np::visitor_t, NamedParameters, Default_optimization_visitor>::type Visitor;
+  return parameters::choose_parameter<Visitor>(parameters::get_parameter(np, CGAL::internal_np::visitor));
+}
 
 inline void check_parameter(bool ok, const std::string& what)
 {
@@ -160,7 +178,7 @@ struct Optimization_setup
     settings.convergence_tolerance =
       choose_parameter(get_parameter(np, TS_np::convergence_tolerance), gauss_newton ? 1e-9 : 1e-12);
     settings.max_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
-                                               gauss_newton ? 300 : 5000);
+                                               default_number_of_iterations(solver));
 
     check_parameter(solver == CONSTRAINED_GAUSS_NEWTON || solver == PAPER_CONJUGATE_GRADIENT,
                     "unknown solver");
@@ -172,6 +190,8 @@ struct Optimization_setup
     check_parameter(settings.congruence_tolerance > 0 && settings.convergence_tolerance >= 0,
                     "the tolerances must be > 0");
     check_parameter(settings.max_iterations >= 0, "number_of_iterations must be >= 0");
+    check_parameter(gauss_newton || !problem.planar,
+                    "planar_tiles needs the default solver (CONSTRAINED_GAUSS_NEWTON)");
     check_parameter(tangential > 0 && tangential <= 1, "tangential_weight must be in (0, 1]");
 
     const auto vim = CGAL::get_initialized_vertex_index_map(pm, np);
@@ -199,7 +219,9 @@ struct Optimization_setup
 /// \ingroup PkgTilableSurfacesRef
 /// Moves the vertices of `pm` so that it becomes tilable by the S-quads of
 /// the clustering given in `np`: the instances of each cluster congruent up to
-/// proper rigid motions, within `congruence_tolerance` (method notes §1).
+/// proper rigid motions (or any rigid motion, mirrors included, with
+/// `orientation_policy` `ALLOW_MIRRORED_PANELS`), within
+/// `congruence_tolerance` (method notes §1).
 ///
 /// The input is checked first (`validate_quad_mesh()`, cluster ids and
 /// orientations) and nothing is modified when it is refused. The solvers work
@@ -217,6 +239,15 @@ struct Optimization_setup
 ///     0..K-1; K = 1 + the largest id \cgalParamNEnd
 ///   \cgalParamNBegin{face_orientation_map} (required) orientation of every
 ///     face's instance, 0..7 or `Quad_orientation` (see `quad_shape.h`) \cgalParamNEnd
+///   \cgalParamNBegin{orientation_policy} with `ALLOW_MIRRORED_PANELS`, an
+///     instance may be the mirror image of its S-quad: the signed volumes are
+///     then left free, since the edges and diagonals alone fix a quad up to a
+///     proper or improper motion; default `PROPER_RIGID_MOTIONS` \cgalParamNEnd
+///   \cgalParamNBegin{planar_tiles} every panel planar as well as congruent:
+///     the distance between the diagonals of every face within
+///     `congruence_tolerance` of the mean edge length
+///     (`Tilability_measure::planarity_error`); default solver only; default
+///     `false` \cgalParamNEnd
 ///   \cgalParamNBegin{solver} a `Solver_type`; default `CONSTRAINED_GAUSS_NEWTON` \cgalParamNEnd
 ///   \cgalParamNBegin{distance_weight} mu1, default 1e-4 (must be > 0 for the
 ///     default solver) \cgalParamNEnd
@@ -258,8 +289,6 @@ Optimization_result optimize_tilable_surface(PolygonMesh& pm, const CGAL_NP_CLAS
   typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
   typedef typename GetVertexPointMap<PolygonMesh, CGAL_NP_CLASS>::type VertexPointMap;
   typedef typename boost::property_traits<VertexPointMap>::value_type Point;
-  typedef typename CGAL::internal_np::Lookup_named_param_def<
-    CGAL::internal_np::visitor_t, CGAL_NP_CLASS, Default_optimization_visitor>::type Visitor;
 
   Optimization_result result;
   CGAL::Real_timer timer;
@@ -274,7 +303,7 @@ Optimization_result optimize_tilable_surface(PolygonMesh& pm, const CGAL_NP_CLAS
   result.setup_time = timer.time();
 
   timer.reset();
-  Visitor visitor = choose_parameter<Visitor>(get_parameter(np, CGAL::internal_np::visitor));
+  auto visitor = internal::visitor_of(np);
   internal::Point_matrix X;
   const internal::Solver_report report =
     setup.solver == CONSTRAINED_GAUSS_NEWTON
@@ -301,7 +330,8 @@ Optimization_result optimize_tilable_surface(PolygonMesh& pm, const CGAL_NP_CLAS
 
   timer.reset();
   result.measure = internal::measure_tilability(problem, setup.D, problem.points, moved);
-  result.converged = result.measure.congruence_error <= settings.congruence_tolerance;
+  result.converged = result.measure.congruence_error <= settings.congruence_tolerance &&
+                     (!problem.planar || result.measure.planarity_error <= settings.congruence_tolerance);
   result.measure_time = timer.time();
   return result;
 }

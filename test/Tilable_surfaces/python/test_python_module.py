@@ -103,6 +103,18 @@ class MakeKSetTilable(unittest.TestCase):
         self.assertLessEqual(r["mean_approximation_error"], r["max_approximation_error"])
         self.assertLessEqual(r["max_approximation_error"] * diagonal, displacement.max() + 1e-12)
 
+    def test_planar_tiles_by_our_own_diagonal_distances(self):
+        r = tilable_surfaces.make_k_set_tilable(self.vertices, self.faces, k=K, planar_tiles=True)
+        self.assertTrue(r["is_tilable"])
+        self.assertLessEqual(congruence_error(r, self.faces), 1e-6)
+        v = r["vertices"]
+        p0, p1, p2, p3 = (v[self.faces[:, i]] for i in range(4))
+        n = np.cross(p2 - p0, p3 - p1)
+        gaps = np.abs(np.einsum("ij,ij->i", p1 - p0, n)) / np.linalg.norm(n, axis=1)
+        self.assertLessEqual(gaps.max() / mean_edge_length(v, self.faces), 1e-6)
+        self.assertAlmostEqual(gaps.max() / mean_edge_length(v, self.faces), r["planarity_error"], delta=1e-9)
+        self.assertGreater(self.result["planarity_error"], 1e-4, "without it the panels are not planar")
+
     def test_same_result_with_other_threads_and_arguments_by_keyword(self):
         again = tilable_surfaces.make_k_set_tilable(self.vertices.tolist(), self.faces.astype(np.int32),
                                                     k=K, seed=3, number_of_candidates=8, threads=2)

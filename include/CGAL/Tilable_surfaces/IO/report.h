@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include <ostream>
+#include <vector>
 
 namespace CGAL {
 namespace Tilable_surfaces {
@@ -26,14 +27,35 @@ inline nlohmann::json energy_terms_json(const Energy_terms& t)
 }
 
 /// \ingroup PkgTilableSurfacesRef
+/// The K tried by a deviation search (`K_set_tilable_result::trials`), in
+/// the order tried, as a JSON array.
+inline nlohmann::json tile_count_trials_json(const std::vector<Tile_count_trial>& trials)
+{
+  nlohmann::json rows = nlohmann::json::array();
+  for(const Tile_count_trial& t : trials)
+    rows.push_back({{"K", t.number_of_tiles},
+                    {"degree_of_flexibility", t.degree_of_flexibility},
+                    {"congruence_error", t.congruence_error},
+                    {"hausdorff_distance", t.hausdorff_distance},
+                    {"max_displacement", t.max_displacement},
+                    {"seconds", t.seconds},
+                    {"tilable", t.is_tilable}});
+  return rows;
+}
+
+/// \ingroup PkgTilableSurfacesRef
 /// The report of a run as JSON: K, degree of flexibility, cluster sizes,
+/// whether planar panels were required and the worst distance between the
+/// diagonals of a face, whether mirrored panels were allowed and how many
+/// each cluster has,
 /// congruence error (worst and per cluster, relative to the mean edge length,
 /// and the tolerance it was held to), the distances between the result and
 /// the input both ways and the symmetric Hausdorff distance (max and mean,
 /// relative to the input's bounding-box diagonal and in its mean edge lengths),
 /// displacement (mesh units), the paper's normalized terms, solver
-/// iterations, whether the result is tilable, the clustering's choice, and
-/// the time of each phase in seconds. Callers add what only they know
+/// iterations, whether the result is tilable, the clustering's choice,
+/// the time of each phase in seconds, and the K tried by a deviation search
+/// (`tried_K`, empty when K was given). Callers add what only they know
 /// (input name, parameters) to the returned object.
 inline nlohmann::json tilability_report_json(const K_set_tilable_result& r,
                                               double congruence_tolerance = 1e-6)
@@ -43,6 +65,11 @@ inline nlohmann::json tilability_report_json(const K_set_tilable_result& r,
     {"K", m.number_of_clusters},
     {"degree_of_flexibility", m.degree_of_flexibility},
     {"cluster_sizes", m.cluster_sizes},
+    {"planar_panels",
+     {{"required", m.requires_planar_tiles}, {"planarity_error", m.planarity_error},
+      {"length_scale", "mean edge length"}}},
+    {"mirrored_panels",
+     {{"allowed", m.allows_mirrored_panels}, {"per_cluster", m.cluster_mirrored_counts}}},
     {"congruence_error",
      {{"worst", m.congruence_error},
       {"per_cluster", m.cluster_congruence_errors},
@@ -73,6 +100,7 @@ inline nlohmann::json tilability_report_json(const K_set_tilable_result& r,
       {"weights_are_exact", r.clustering.weights_are_exact},
       {"degree_of_flexibility", r.clustering.degree_of_flexibility},
       {"choice", r.clustering.choice_reason}}},
+    {"tried_K", tile_count_trials_json(r.trials)},
     {"time_seconds",
      {{"validation", r.validation_time},
       {"clustering", r.clustering_time},

@@ -35,11 +35,15 @@ struct Tile
   std::size_t id = 0;
   /// The number of faces that are instances of this S-quad.
   std::size_t instance_count = 0;
+  /// How many of them are mirror images of it, cut from the mirrored mold
+  /// (only with `orientation_policy` `ALLOW_MIRRORED_PANELS`).
+  std::size_t mirrored_count = 0;
   /// Corners t0..t3 in a canonical frame (t0 at the origin, t1 on +x, t2 in
   /// the xy plane with y >= 0), in the mesh's units.
   Quad corners;
   /// The largest corner deviation of an instance from the S-quad after its
-  /// best proper rigid fit, in the mesh's units.
+  /// best rigid fit (proper, or improper for a mirrored instance), in the
+  /// mesh's units.
   double worst_deviation = 0;
 };
 
@@ -52,12 +56,18 @@ struct Tile_row
   std::array<double, 2> diagonals;
   double signed_volume;
   double planarity;
+  bool is_planar; // diagonals within 1e-6 of the mean edge of each other
 };
 
 inline Tile_row tile_row(const Tile& t)
 {
-  return Tile_row{edge_lengths(t.corners), diagonal_lengths(t.corners),
-                  Tilable_surfaces::signed_volume(t.corners), planarity_defect(t.corners)};
+  const std::array<double, 4> edges = edge_lengths(t.corners);
+  const Eigen::Vector3d n = (t.corners[2] - t.corners[0]).cross(t.corners[3] - t.corners[1]);
+  const double diagonal_distance =
+    n.norm() > 0 ? std::abs((t.corners[1] - t.corners[0]).dot(n)) / n.norm() : 0.0;
+  const double mean_edge = 0.25 * (edges[0] + edges[1] + edges[2] + edges[3]);
+  return Tile_row{edges, diagonal_lengths(t.corners), Tilable_surfaces::signed_volume(t.corners),
+                  planarity_defect(t.corners), diagonal_distance <= 1e-6 * mean_edge};
 }
 
 // Refuses a catalog with a non-finite number, before anything is written.
@@ -76,27 +86,31 @@ inline void check_tiles(const std::vector<Tile>& tiles)
 } // namespace internal
 
 /// \ingroup PkgTilableSurfacesRef
-/// Writes the catalog as CSV with a header line: `id, instances`, the 12
+/// Writes the catalog as CSV with a header line: `id, instances, mirrored`
+/// (instances cut from the mirrored mold), the 12
 /// corner coordinates `t0x ... t3z`, the edge lengths `e01, e12, e23, e30`,
 /// the diagonals `d02, d13`, `signed_volume`, `planarity` (distance of t3 to
-/// the plane of t0, t1, t2) and `worst_deviation`. Full double precision.
+/// the plane of t0, t1, t2), `planar` (1 if the diagonals are within 1e-6 of
+/// the tile's mean edge length of each other, a flat mold) and
+/// `worst_deviation`. Full double precision.
 /// \throws Invalid_input if a tile has a non-finite number; nothing is
 /// written then.
 inline bool write_tile_catalog_CSV(std::ostream& os, const std::vector<Tile>& tiles)
 {
   internal::check_tiles(tiles);
-  os << "id,instances,t0x,t0y,t0z,t1x,t1y,t1z,t2x,t2y,t2z,t3x,t3y,t3z,"
-        "e01,e12,e23,e30,d02,d13,signed_volume,planarity,worst_deviation\n";
+  os << "id,instances,mirrored,t0x,t0y,t0z,t1x,t1y,t1z,t2x,t2y,t2z,t3x,t3y,t3z,"
+        "e01,e12,e23,e30,d02,d13,signed_volume,planarity,planar,worst_deviation\n";
   os << std::setprecision(std::numeric_limits<double>::max_digits10);
   for(const Tile& t : tiles)
   {
     const internal::Tile_row r = internal::tile_row(t);
-    os << t.id << ',' << t.instance_count;
+    os << t.id << ',' << t.instance_count << ',' << t.mirrored_count;
     for(const Eigen::Vector3d& p : t.corners)
       os << ',' << p.x() << ',' << p.y() << ',' << p.z();
     for(double e : r.edges) os << ',' << e;
     for(double d : r.diagonals) os << ',' << d;
-    os << ',' << r.signed_volume << ',' << r.planarity << ',' << t.worst_deviation << '\n';
+    os << ',' << r.signed_volume << ',' << r.planarity << ',' << (r.is_planar ? 1 : 0) << ','
+       << t.worst_deviation << '\n';
   }
   return bool(os);
 }
@@ -118,11 +132,13 @@ inline nlohmann::json tile_catalog_json(const std::vector<Tile>& tiles)
       corners.push_back({p.x(), p.y(), p.z()});
     catalog.push_back({{"id", t.id},
                        {"instances", t.instance_count},
+                       {"mirrored", t.mirrored_count},
                        {"corners", corners},
                        {"edges", r.edges},
                        {"diagonals", r.diagonals},
                        {"signed_volume", r.signed_volume},
                        {"planarity", r.planarity},
+                       {"planar", r.is_planar},
                        {"worst_deviation", t.worst_deviation}});
   }
   return catalog;

@@ -6,23 +6,26 @@
 
 // Congruence of the instances of each cluster, by rigid fits only (no energy):
 // the S-quad is the Procrustes mean of the instances, and a cluster's error is
-// its worst instance's largest corner deviation after the best proper rigid
-// fit of the S-quad onto it.
+// its worst instance's largest corner deviation after the best rigid fit of
+// the S-quad onto it: a proper one, or either kind when the problem allows
+// mirrored panels.
 
 #include <CGAL/Tilable_surfaces/internal/Optimization/Tilable_problem.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 
 #include <algorithm>
+#include <cmath>
 #include <vector>
 
 namespace CGAL {
 namespace Tilable_surfaces {
 namespace internal {
 
-// Generalized Procrustes mean under proper rigid motions: align every instance
-// onto the current mean, average, repeat until the mean stops moving. Exact
-// (one pass) when the instances are congruent.
-inline Quad procrustes_mean(const std::vector<Quad>& instances)
+// Generalized Procrustes mean under proper rigid motions (and mirrors with
+// `allow_mirror`): align every instance onto the current mean, average,
+// repeat until the mean stops moving. Exact (one pass) when the instances are
+// congruent.
+inline Quad procrustes_mean(const std::vector<Quad>& instances, bool allow_mirror = false)
 {
   Quad mean = instances.front();
   for(int pass = 0; pass < 10; ++pass)
@@ -31,7 +34,7 @@ inline Quad procrustes_mean(const std::vector<Quad>& instances)
               Eigen::Vector3d::Zero()}};
     for(const Quad& q : instances)
     {
-      const Quad aligned = best_rigid_fit(q, mean)(q);
+      const Quad aligned = best_rigid_fit(q, mean, allow_mirror)(q);
       for(int i = 0; i < 4; ++i)
         sum[i] += aligned[i];
     }
@@ -70,6 +73,7 @@ struct Cluster_congruence
   std::vector<Quad> s_quads;       // canonical frame; empty clusters get zeros
   std::vector<std::size_t> sizes;  // instances per cluster
   std::vector<double> errors;      // absolute lengths
+  std::vector<std::size_t> mirrored; // instances whose best fit is a mirror
 };
 
 inline Cluster_congruence cluster_congruence(const Tilable_problem& problem, const Point_matrix& X)
@@ -84,24 +88,53 @@ inline Cluster_congruence cluster_congruence(const Tilable_problem& problem, con
                                  Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()}});
   result.errors.assign(K, 0.0);
   result.sizes.assign(K, 0);
+  result.mirrored.assign(K, 0);
   for(std::size_t c = 0; c < K; ++c)
   {
     result.sizes[c] = members[c].size();
     if(members[c].empty())
       continue;
-    const Quad mean = procrustes_mean(members[c]);
+    const Quad mean = procrustes_mean(members[c], problem.allow_mirror);
     result.s_quads[c] = canonical_frame(mean);
     for(const Quad& q : members[c])
-      result.errors[c] = (std::max)(result.errors[c], rigid_fit_deviation(mean, q));
+    {
+      result.errors[c] = (std::max)(result.errors[c], rigid_fit_deviation(mean, q, problem.allow_mirror));
+      // The mold of a planar S-quad is its own mirror image.
+      if(problem.allow_mirror && planarity_defect(mean) > 1e-9 * (mean[2] - mean[0]).norm() &&
+         best_rigid_fit(mean, q, true).is_mirrored)
+        ++result.mirrored[c];
+    }
   }
   return result;
 }
 
-// The congruence error of method notes §1: worst cluster error / mean edge length.
+// The distance between the lines of the diagonals t0t2 and t1t3: 0 exactly
+// when the quad is planar (or its diagonals are parallel).
+inline double diagonal_distance(const Quad& q)
+{
+  const Eigen::Vector3d n = (q[2] - q[0]).cross(q[3] - q[1]);
+  const double length = n.norm();
+  return length > 0 ? std::abs((q[1] - q[0]).dot(n)) / length : 0.0;
+}
+
+// The largest distance between the diagonals of a face (absolute length).
+inline double worst_diagonal_distance(const Tilable_problem& problem, const Point_matrix& X)
+{
+  double worst = 0;
+  for(std::size_t f = 0; f < problem.face_corners.size(); ++f)
+    worst = (std::max)(worst, diagonal_distance(instance(problem, X, f)));
+  return worst;
+}
+
+// The congruence error of method notes §1: worst cluster error / mean edge
+// length; with planar tiles, the worst distance between the diagonals of a
+// face too, so that the solvers stop only on planar panels.
 inline double congruence_error(const Tilable_problem& problem, const Point_matrix& X)
 {
   const std::vector<double> errors = cluster_congruence(problem, X).errors;
-  const double worst = errors.empty() ? 0.0 : *std::max_element(errors.begin(), errors.end());
+  double worst = errors.empty() ? 0.0 : *std::max_element(errors.begin(), errors.end());
+  if(problem.planar)
+    worst = (std::max)(worst, worst_diagonal_distance(problem, X));
   return worst / mean_edge_length(problem, X);
 }
 

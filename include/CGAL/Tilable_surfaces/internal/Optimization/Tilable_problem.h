@@ -17,6 +17,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <Eigen/Core>
+#include <Eigen/Geometry>
 
 #include <array>
 #include <cstddef>
@@ -54,6 +55,19 @@ struct Tilable_problem
   Equality_groups edge_groups;     // F_e: mesh edges, one group per component
   Equality_groups diagonal_groups; // F_a: diagonals t0t2 and t1t3, two groups per cluster
   Equality_groups volume_groups;   // F_o: corners, one group per cluster
+  // ALLOW_MIRRORED_PANELS: an instance may be the mirror image of its
+  // S-quad. Then the volume groups list each instance of negative signed
+  // volume with t1 and t3 swapped, which negates the volume and keeps the
+  // diagonals: equal volumes up to the sign each instance has in the input.
+  // (Dropping the volumes would do in exact arithmetic, since 4 edges and 2
+  // diagonals fix a quad up to a mirror, but near a planar quad the
+  // distances fix its height only to the square root of their residual:
+  // monkey saddle, K = 3, stalled at a congruence error of 6e-5.)
+  bool allow_mirror = false;
+  // planar_tiles: every panel planar too. The constraints pin each
+  // cluster's volume to 0 and the congruence error counts the distance
+  // between the diagonals of every face.
+  bool planar = false;
 
   std::size_t number_of_vertices() const { return std::size_t(points.rows()); }
 };
@@ -91,11 +105,14 @@ Tilable_problem make_tilable_problem(const PolygonMesh& pm, const NamedParameter
                                                 get_const_property_map(CGAL::vertex_point, pm));
   const auto vim = CGAL::get_initialized_vertex_index_map(pm, np);
 
+  Tilable_problem problem;
+  problem.allow_mirror = parameters::choose_parameter(get_parameter(np, TS_np::orientation_policy),
+                                                      PROPER_RIGID_MOTIONS) == ALLOW_MIRRORED_PANELS;
+  problem.planar = parameters::choose_parameter(get_parameter(np, TS_np::planar_tiles), false);
   long long largest = -1;
   for(auto f : faces(pm))
     largest = (std::max)(largest, static_cast<long long>(get(cluster_map, f)));
 
-  Tilable_problem problem;
   problem.number_of_clusters = std::size_t(largest + 1);
   // The graph checks the ranges of clusters and orientations.
   const Edge_sharing_graph<PolygonMesh> graph(pm, problem.number_of_clusters, cluster_map,
@@ -143,7 +160,16 @@ Tilable_problem make_tilable_problem(const PolygonMesh& pm, const NamedParameter
       problem.diagonal_groups.close_group();
     }
     for(std::size_t i : members)
-      problem.volume_groups.items.push_back(problem.face_corners[i]);
+    {
+      const auto& c = problem.face_corners[i];
+      const Eigen::RowVector3d p0 = problem.points.row(c[0]);
+      const double six_volume = (problem.points.row(c[1]) - p0)
+        .dot((problem.points.row(c[2]) - p0).cross(problem.points.row(c[3]) - p0));
+      if(problem.allow_mirror && six_volume < 0)
+        problem.volume_groups.items.push_back({{c[0], c[3], c[2], c[1]}});
+      else
+        problem.volume_groups.items.push_back(c);
+    }
     problem.volume_groups.close_group();
   }
   return problem;

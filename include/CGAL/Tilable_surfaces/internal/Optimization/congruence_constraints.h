@@ -9,7 +9,9 @@
 // the length scale `ell`:
 // - squared lengths: ell (q_a - q_b) / (q_a + q_b);
 // - volumes: 6 ell (w_a - w_b), w = scale_free_volume(), or ell (w_a - w_b),
-//   w = volume_shape() (Volume_quantity).
+//   w = volume_shape() (Volume_quantity);
+// - with planar tiles, one more row per cluster, the volume of its first
+//   instance against 0: with the others' equal to it, every panel is planar.
 // Both are invariant under scaling of the surface (method notes §4b): with
 // absolute differences, shrinking the mesh lowers every residual, and far
 // from a solution the Gauss-Newton steps head for a collapsed surface. With
@@ -45,7 +47,7 @@ class Congruence_constraints
   {
     Quantity_kind kind;
     const std::array<int, 4>* a;
-    const std::array<int, 4>* b;
+    const std::array<int, 4>* b; // null: q_a against 0 (planarity)
   };
   // A row touches at most 8 vertices, 3 unknowns each.
   static constexpr int max_entries = 24;
@@ -64,6 +66,10 @@ public:
     add(SQUARED_DISTANCE, problem.edge_groups);
     add(SQUARED_DISTANCE, problem.diagonal_groups);
     add(SIGNED_VOLUME, problem.volume_groups);
+    if(problem.planar)
+      for(std::size_t g = 0; g < problem.volume_groups.number_of_groups(); ++g)
+        if(problem.volume_groups.begin[g] < problem.volume_groups.begin[g + 1])
+          m_rows.push_back(Row{SIGNED_VOLUME, &problem.volume_groups.items[problem.volume_groups.begin[g]], nullptr});
   }
 
   int number_of_rows() const { return int(m_rows.size()); }
@@ -87,7 +93,7 @@ public:
           return internal::evaluate(row.kind, item, X);
         return m_volume == VOLUME_SHAPE ? volume_shape(item, X) : scale_free_volume(item, X);
       };
-      const Quantity qa = quantity(*row.a), qb = quantity(*row.b);
+      const Quantity qa = quantity(*row.a), qb = row.b != nullptr ? quantity(*row.b) : Quantity{0, {}, 0};
       const Row_function f = row_function(row.kind, qa.value, qb.value);
       c[r] = f.value;
       const double da = f.da, db = f.db;
@@ -147,7 +153,8 @@ public:
       {
         // c is linear in (w_a, w_b): no cross term.
         emit(*row.a, 6 * m_ell * scale_free_volume_hessian(*row.a, X));
-        emit(*row.b, -6 * m_ell * scale_free_volume_hessian(*row.b, X));
+        if(row.b != nullptr)
+          emit(*row.b, -6 * m_ell * scale_free_volume_hessian(*row.b, X));
         return;
       }
       // The 4 vertices (a0, a1, b0, b1): c = f(q_a, q_b), q = |x0 - x1|^2.

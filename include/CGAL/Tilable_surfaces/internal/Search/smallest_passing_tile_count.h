@@ -1,0 +1,70 @@
+// Copyright (c) 2026 Tilable_surfaces contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TILABLE_SURFACES_INTERNAL_SEARCH_SMALLEST_PASSING_TILE_COUNT_H
+#define CGAL_TILABLE_SURFACES_INTERNAL_SEARCH_SMALLEST_PASSING_TILE_COUNT_H
+
+// The search of a deviation budget over K, apart from what a trial costs:
+// each trial is a whole clustering and optimization, so K is galloped from a
+// first guess, then bisected, and no K is tried twice.
+
+#include <algorithm>
+#include <cstddef>
+
+namespace CGAL {
+namespace Tilable_surfaces {
+namespace internal {
+
+// The smallest K in [1, k_max] for which `passes(K)` holds, if passing is
+// monotone in K (more molds, closer surface): halving down from `k_first`
+// while it passes, or doubling up while it fails, then bisecting. Whatever
+// `passes` does, the K returned passed and K - 1 was tried and failed (or
+// K = 1). Returns k_max + 1 if k_max fails.
+template <typename Passes>
+std::size_t smallest_passing_tile_count(std::size_t k_first, std::size_t k_max, Passes passes)
+{
+  if(k_max == 0)
+    return 1;
+  std::size_t failed = 0;          // the largest K tried that failed, 0 if none
+  std::size_t passed = k_max + 1;  // the smallest K tried that passed
+  const std::size_t first = (std::min)((std::max)(k_first, std::size_t(1)), k_max);
+  if(passes(first))
+  {
+    passed = first;
+    while(passed > 1 && failed == 0)
+    {
+      const std::size_t k = passed / 2;
+      if(passes(k))
+        passed = k;
+      else
+        failed = k;
+    }
+  }
+  else
+  {
+    failed = first;
+    while(passed == k_max + 1 && failed < k_max)
+    {
+      const std::size_t k = (std::min)(k_max, 2 * failed);
+      if(passes(k))
+        passed = k;
+      else
+        failed = k;
+    }
+  }
+  while(passed <= k_max && passed - failed > 1)
+  {
+    const std::size_t k = failed + (passed - failed) / 2;
+    if(passes(k))
+      passed = k;
+    else
+      failed = k;
+  }
+  return passed;
+}
+
+} // namespace internal
+} // namespace Tilable_surfaces
+} // namespace CGAL
+
+#endif // CGAL_TILABLE_SURFACES_INTERNAL_SEARCH_SMALLEST_PASSING_TILE_COUNT_H

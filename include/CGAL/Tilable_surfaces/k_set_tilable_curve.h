@@ -1,0 +1,74 @@
+// Copyright (c) 2026 Tilable_surfaces contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TILABLE_SURFACES_K_SET_TILABLE_CURVE_H
+#define CGAL_TILABLE_SURFACES_K_SET_TILABLE_CURVE_H
+
+/// \file k_set_tilable_curve.h
+/// What each extra mold buys: the pipeline of `make_k_set_tilable()` at a
+/// range of K, one `Tile_count_trial` per K.
+
+#include <CGAL/Tilable_surfaces/make_k_set_tilable.h>
+
+#include <CGAL/Real_timer.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Tilable_surfaces {
+
+/// \ingroup PkgTilableSurfacesRef
+/// Runs the clustering and optimization of `make_k_set_tilable()` at every K
+/// of `tile_counts`, in that order, on `pm` checked once, and returns what
+/// each K gave: DOF, congruence, Hausdorff distance to the input,
+/// displacement and time. `pm` keeps its input positions.
+///
+/// \cgalNamedParamsBegin
+///   \cgalParamNBegin{...} the parameters of `make_k_set_tilable()` except
+///     `number_of_tiles`, `max_deviation` and the output maps. \cgalParamNEnd
+/// \cgalNamedParamsEnd
+///
+/// \throws Invalid_input if `pm` is not a valid quad mesh, or a K is 0 or
+/// more than the number of faces; `pm` is untouched then.
+template <class PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
+std::vector<Tile_count_trial> k_set_tilable_curve(PolygonMesh& pm, const std::vector<std::size_t>& tile_counts,
+                                                  const CGAL_NP_CLASS& np = parameters::default_values())
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  typedef typename CGAL::GetVertexPointMap<PolygonMesh, CGAL_NP_CLASS>::type Vertex_point_map;
+  auto visitor = internal::visitor_of(np);
+
+  for(std::size_t k : tile_counts)
+    if(k < 1 || k > num_faces(pm))
+      throw Invalid_input("K = " + std::to_string(k) + " is out of range: the mesh has " +
+                          std::to_string(num_faces(pm)) + " faces", Invalid_input::PARAMETER);
+  const Vertex_point_map vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                                get_property_map(CGAL::vertex_point, pm));
+  K_set_tilable_surface<PolygonMesh, Vertex_point_map> surface(pm, vpm);
+  std::vector<typename boost::property_traits<Vertex_point_map>::value_type> input;
+  for(auto v : vertices(pm)) input.push_back(get(vpm, v));
+
+  std::vector<Tile_count_trial> trials;
+  for(std::size_t k : tile_counts)
+  {
+    CGAL::Real_timer timer;
+    timer.start();
+    K_set_tilable_result r;
+    internal::cluster_and_optimize(surface, parameters::extend(np).number_of_tiles(int(k)), visitor, r);
+    trials.push_back(internal::tile_count_trial(r, timer.time()));
+    if(r.optimization.stopped_by_visitor)
+      break;
+  }
+  auto point = input.begin();
+  for(auto v : vertices(pm)) put(vpm, v, *point++);
+  return trials;
+}
+
+} // namespace Tilable_surfaces
+} // namespace CGAL
+
+#endif // CGAL_TILABLE_SURFACES_K_SET_TILABLE_CURVE_H

@@ -1,0 +1,180 @@
+// A deviation budget instead of K (make_k_set_tilable() with max_deviation),
+// the K / deviation curve (k_set_tilable_curve()) and its CSV.
+#include <CGAL/Simple_cartesian.h>
+#include <CGAL/Surface_mesh.h>
+
+#include <CGAL/Tilable_surfaces/IO/write_tile_count_curve.h>
+#include <CGAL/Tilable_surfaces/internal/Search/smallest_passing_tile_count.h>
+#include <CGAL/Tilable_surfaces/k_set_tilable_curve.h>
+#include <CGAL/Tilable_surfaces/make_k_set_tilable.h>
+#include <CGAL/Tilable_surfaces/measure.h>
+
+#include "csv_cells.h"
+#include "grid_mesh.h"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+#include <sstream>
+#include <string>
+#include <vector>
+
+namespace TS = CGAL::Tilable_surfaces;
+namespace TSP = CGAL::Tilable_surfaces::parameters;
+typedef CGAL::Simple_cartesian<double>::Point_3 Point;
+typedef CGAL::Surface_mesh<Point> Mesh;
+
+namespace {
+
+// A 3 x 3 grid on the monkey saddle z = x^3 - 3 x y^2 over [-1, 1]^2: nine
+// faces, all different, so every K from 1 to 9 can be run in a test.
+Mesh small_saddle()
+{
+  Mesh m = grid<Mesh>(3, 3, 2.0 / 3, 2.0 / 3);
+  for(auto v : vertices(m))
+  {
+    const double x = m.point(v).x() - 1, y = m.point(v).y() - 1;
+    m.point(v) = Point(x, y, 0.5 * (x * x * x - 3 * x * y * y));
+  }
+  return m;
+}
+
+// Records the K asked, and passes from `threshold` on, or as `table` says.
+struct Recorder
+{
+  std::vector<std::size_t> asked;
+  std::map<std::size_t, bool> table;
+  std::size_t threshold = 0;
+  bool operator()(std::size_t k)
+  {
+    asked.push_back(k);
+    return table.empty() ? k >= threshold : table.at(k);
+  }
+};
+
+} // namespace
+
+TEST(TileCountSearch, FindsTheThresholdOfAMonotoneTestTryingEachKOnce)
+{
+  for(std::size_t k_max : {1, 2, 7, 100})
+    for(std::size_t first : {1, 2, 5, 60, 200})
+      for(std::size_t threshold = 1; threshold <= k_max + 1; ++threshold)
+      {
+        Recorder passes;
+        passes.threshold = threshold;
+        const std::size_t k = TS::internal::smallest_passing_tile_count(first, k_max, std::ref(passes));
+        EXPECT_EQ(k, threshold) << "k_max " << k_max << " first " << first;
+        std::vector<std::size_t> sorted = passes.asked;
+        std::sort(sorted.begin(), sorted.end());
+        EXPECT_TRUE(std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end()) << "a K asked twice";
+        EXPECT_LE(passes.asked.size(), std::size_t(2 * 8 + 2)) << "logarithmic in k_max";
+        for(std::size_t a : passes.asked) EXPECT_TRUE(a >= 1 && a <= k_max);
+        if(k > 1 && k <= k_max)
+          EXPECT_NE(std::find(passes.asked.begin(), passes.asked.end(), k - 1), passes.asked.end())
+            << "K - 1 was tried";
+      }
+}
+
+TEST(TileCountSearch, WhateverTheTestTheResultPassedAndKMinusOneFailed)
+{
+  // Not monotone: 3 passes, 4 to 6 fail, 7 on pass.
+  Recorder passes;
+  for(std::size_t k = 1; k <= 12; ++k) passes.table[k] = (k == 3 || k >= 7);
+  const std::size_t k = TS::internal::smallest_passing_tile_count(6, 12, std::ref(passes));
+  EXPECT_TRUE(passes.table.at(k));
+  EXPECT_FALSE(passes.table.at(k - 1));
+  EXPECT_NE(std::find(passes.asked.begin(), passes.asked.end(), k - 1), passes.asked.end());
+}
+
+// On a mesh where every K is run: the search returns a K that meets the
+// budget while K - 1 misses it, each as the curve measured independently, and
+// the mesh it returns is within the budget by an independent measure.
+TEST(TileCountSearch, SmallestKWithinTheBudgetOnAMeshWhereEveryKIsChecked)
+{
+  Mesh mesh = small_saddle();
+  const Mesh input = mesh;
+  std::vector<std::size_t> all(num_faces(mesh));
+  std::iota(all.begin(), all.end(), std::size_t(1));
+  const std::vector<TS::Tile_count_trial> curve = TS::k_set_tilable_curve(mesh, all);
+  ASSERT_EQ(curve.size(), all.size());
+  for(auto v : vertices(mesh)) EXPECT_EQ(mesh.point(v), input.point(v)) << "the curve leaves the mesh as it was";
+  EXPECT_TRUE(curve.back().is_tilable);
+  EXPECT_LT(curve.back().hausdorff_distance, 1e-12) << "one tile per face: nothing moves";
+
+  // A budget between the deviations of the last K that misses and the next.
+  std::size_t expected = 0;
+  double budget = 0;
+  for(std::size_t i = all.size(); i-- > 1;)
+    if(curve[i].is_tilable && curve[i - 1].is_tilable && curve[i - 1].hausdorff_distance > curve[i].hausdorff_distance)
+    {
+      expected = all[i];
+      budget = 0.5 * (curve[i].hausdorff_distance + curve[i - 1].hausdorff_distance);
+      break;
+    }
+  ASSERT_GT(expected, 1u) << "the deviation decreases somewhere";
+
+  auto cluster = mesh.add_property_map<Mesh::Face_index, int>("f:c", -1).first;
+  auto orientation = mesh.add_property_map<Mesh::Face_index, int>("f:o", -1).first;
+  const TS::K_set_tilable_result r = TS::make_k_set_tilable(
+    mesh, TSP::max_deviation(budget).face_cluster_map(cluster).face_orientation_map(orientation));
+  const std::size_t k = r.optimization.measure.number_of_clusters;
+  EXPECT_TRUE(curve[k - 1].meets(budget)) << "K = " << k;
+  if(k > 1)
+  {
+    EXPECT_FALSE(curve[k - 2].meets(budget)) << "K - 1 = " << k - 1 << " misses the budget";
+    const auto tried = std::find_if(r.trials.begin(), r.trials.end(),
+                                    [&](const TS::Tile_count_trial& t) { return t.number_of_tiles == k - 1; });
+    ASSERT_NE(tried, r.trials.end()) << "K - 1 was tried";
+    EXPECT_EQ(tried->hausdorff_distance, curve[k - 2].hausdorff_distance) << "deterministic";
+  }
+  // Every K tried, as the curve has it.
+  for(const TS::Tile_count_trial& t : r.trials)
+    EXPECT_EQ(t.hausdorff_distance, curve[t.number_of_tiles - 1].hausdorff_distance) << "K = " << t.number_of_tiles;
+
+  const TS::Tilability_measure m = TS::measure_tilability(
+    mesh, input, TSP::face_cluster_map(cluster).face_orientation_map(orientation));
+  EXPECT_EQ(m.number_of_clusters, k);
+  EXPECT_LE(m.congruence_error, 1e-6);
+  EXPECT_LE(m.hausdorff_distance, budget);
+}
+
+TEST(TileCountSearch, ABudgetNoKMeetsGivesTheLargestKTried)
+{
+  Mesh mesh = small_saddle();
+  const TS::K_set_tilable_result r =
+    TS::make_k_set_tilable(mesh, TSP::max_deviation(0.0).number_of_tiles(4));
+  EXPECT_EQ(r.optimization.measure.number_of_clusters, 4u) << "the largest K allowed";
+  for(const TS::Tile_count_trial& t : r.trials) EXPECT_LE(t.number_of_tiles, 4u);
+  EXPECT_THROW(TS::make_k_set_tilable(mesh, TSP::max_deviation(-1.0)), TS::Invalid_input);
+}
+
+TEST(TileCountCurve, TheCsvHasOneRowPerKWithItsValues)
+{
+  Mesh mesh = small_saddle();
+  const std::vector<std::size_t> ks{1, 3, 9};
+  const std::vector<TS::Tile_count_trial> curve = TS::k_set_tilable_curve(mesh, ks);
+  std::stringstream out;
+  ASSERT_TRUE(TS::IO::write_tile_count_curve_CSV(out, curve));
+  std::string line;
+  std::getline(out, line);
+  const std::vector<std::string> header = csv_cells(line);
+  ASSERT_EQ(header.size(), 7u);
+  EXPECT_EQ(header[0], "K");
+  EXPECT_EQ(header[3], "hausdorff_distance");
+  std::size_t row = 0;
+  while(std::getline(out, line))
+  {
+    const std::vector<std::string> cells = csv_cells(line);
+    ASSERT_EQ(cells.size(), header.size());
+    ASSERT_LT(row, ks.size());
+    EXPECT_EQ(std::stoul(cells[0]), ks[row]);
+    EXPECT_EQ(std::stod(cells[3]), curve[row].hausdorff_distance) << "full precision";
+    EXPECT_EQ(cells[6], curve[row].is_tilable ? "1" : "0");
+    ++row;
+  }
+  EXPECT_EQ(row, ks.size());
+  EXPECT_THROW(TS::k_set_tilable_curve(mesh, std::vector<std::size_t>{10}), TS::Invalid_input);
+  EXPECT_THROW(TS::k_set_tilable_curve(mesh, std::vector<std::size_t>{0}), TS::Invalid_input);
+}

@@ -125,9 +125,13 @@ TEST(QuadShape, HandComputedLengthsVolumeAndPlanarity)
   EXPECT_DOUBLE_EQ(TS::signed_volume(q), h / 6);
   // t3 lies h above the plane z = 0 of t0, t1, t2.
   EXPECT_NEAR(TS::planarity_defect(q), h, 1e-15);
+  // The diagonals: t0 + s (1,1,0) and t1 + u (-1,1,h); their common normal
+  // (h, -h, 2) and the offset t1 - t0 = (1,0,0) give h / sqrt(2 h^2 + 4).
+  EXPECT_DOUBLE_EQ(TS::diagonal_distance(q), h / std::sqrt(2 * h * h + 4));
   TS::Quad flat = q;
   flat[3].z() = 0;
   EXPECT_EQ(TS::planarity_defect(flat), 0.0);
+  EXPECT_EQ(TS::diagonal_distance(flat), 0.0);
 }
 
 TEST(QuadShape, SignedVolumeFollowsTheSignOfTheRelabelling)

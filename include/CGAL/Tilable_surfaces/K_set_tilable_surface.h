@@ -453,6 +453,10 @@ public:
   /// The input mesh, as it was when the object was made.
   const PolygonMesh& input_mesh() const { return *m_input; }
 
+  /// Puts the input positions back in the mesh. Clustering, edits and solves
+  /// call it first: they start from the input, never from a result.
+  void restore_input() { write_points(m_input_points); }
+
   /// The tile catalog of the current mesh: one tile per S-quad, with the
   /// measured worst deviation of its instances, in the mesh's units.
   std::vector<IO::Tile> tile_catalog()
@@ -521,10 +525,6 @@ private:
   {
     return (std::min)(user_iterations, (std::max)(30, 3 * best.optimization.iterations));
   }
-
-  // The input positions back in the mesh: clustering, edits and solves
-  // start from the input, never from a result.
-  void restore_input() { write_points(m_input_points); }
 
   // Rounds of optimize_closest() beyond the user's that repair a result that
   // is not tilable.

@@ -49,8 +49,6 @@ std::vector<Tile_count_trial> k_set_tilable_curve(PolygonMesh& pm, const std::ve
   const Vertex_point_map vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                                 get_property_map(CGAL::vertex_point, pm));
   K_set_tilable_surface<PolygonMesh, Vertex_point_map> surface(pm, vpm);
-  std::vector<typename boost::property_traits<Vertex_point_map>::value_type> input;
-  for(auto v : vertices(pm)) input.push_back(get(vpm, v));
 
   std::vector<Tile_count_trial> trials;
   for(std::size_t k : tile_counts)
@@ -63,8 +61,7 @@ std::vector<Tile_count_trial> k_set_tilable_curve(PolygonMesh& pm, const std::ve
     if(r.optimization.stopped_by_visitor)
       break;
   }
-  auto point = input.begin();
-  for(auto v : vertices(pm)) put(vpm, v, *point++);
+  surface.restore_input();
   return trials;
 }
 

@@ -192,6 +192,17 @@ inline double planarity_defect(const Quad& q)
 }
 
 /// \ingroup PkgTilableSurfacesRef
+/// Distance between the lines of the diagonals t0t2 and t1t3: 0 exactly when
+/// the quad is planar (or its diagonals are parallel). The planarity measure
+/// of `planar_tiles`.
+inline double diagonal_distance(const Quad& q)
+{
+  const Eigen::Vector3d n = (q[2] - q[0]).cross(q[3] - q[1]);
+  const double length = n.norm();
+  return length > 0 ? std::abs((q[1] - q[0]).dot(n)) / length : 0.0;
+}
+
+/// \ingroup PkgTilableSurfacesRef
 /// A rotation-invariant and relabelling-invariant shape descriptor, all in
 /// length units: the 4 edge lengths sorted, the 2 diagonal lengths sorted and
 /// the cube root of 6|V|. Congruent quads have equal descriptors (mirror

@@ -62,12 +62,9 @@ struct Tile_row
 inline Tile_row tile_row(const Tile& t)
 {
   const std::array<double, 4> edges = edge_lengths(t.corners);
-  const Eigen::Vector3d n = (t.corners[2] - t.corners[0]).cross(t.corners[3] - t.corners[1]);
-  const double diagonal_distance =
-    n.norm() > 0 ? std::abs((t.corners[1] - t.corners[0]).dot(n)) / n.norm() : 0.0;
   const double mean_edge = 0.25 * (edges[0] + edges[1] + edges[2] + edges[3]);
   return Tile_row{edges, diagonal_lengths(t.corners), Tilable_surfaces::signed_volume(t.corners),
-                  planarity_defect(t.corners), diagonal_distance <= 1e-6 * mean_edge};
+                  planarity_defect(t.corners), diagonal_distance(t.corners) <= 1e-6 * mean_edge};
 }
 
 // Refuses a catalog with a non-finite number, before anything is written.

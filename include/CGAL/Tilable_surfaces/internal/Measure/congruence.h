@@ -14,7 +14,6 @@
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 
 #include <algorithm>
-#include <cmath>
 #include <vector>
 
 namespace CGAL {
@@ -96,25 +95,17 @@ inline Cluster_congruence cluster_congruence(const Tilable_problem& problem, con
       continue;
     const Quad mean = procrustes_mean(members[c], problem.allow_mirror);
     result.s_quads[c] = canonical_frame(mean);
+    // The mold of a planar S-quad is its own mirror image.
+    const bool count_mirrored =
+      problem.allow_mirror && planarity_defect(mean) > 1e-9 * (mean[2] - mean[0]).norm();
     for(const Quad& q : members[c])
     {
       result.errors[c] = (std::max)(result.errors[c], rigid_fit_deviation(mean, q, problem.allow_mirror));
-      // The mold of a planar S-quad is its own mirror image.
-      if(problem.allow_mirror && planarity_defect(mean) > 1e-9 * (mean[2] - mean[0]).norm() &&
-         best_rigid_fit(mean, q, true).is_mirrored)
+      if(count_mirrored && best_rigid_fit(mean, q, true).is_mirrored)
         ++result.mirrored[c];
     }
   }
   return result;
-}
-
-// The distance between the lines of the diagonals t0t2 and t1t3: 0 exactly
-// when the quad is planar (or its diagonals are parallel).
-inline double diagonal_distance(const Quad& q)
-{
-  const Eigen::Vector3d n = (q[2] - q[0]).cross(q[3] - q[1]);
-  const double length = n.norm();
-  return length > 0 ? std::abs((q[1] - q[0]).dot(n)) / length : 0.0;
 }
 
 // The largest distance between the diagonals of a face (absolute length).

@@ -17,7 +17,6 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <Eigen/Core>
-#include <Eigen/Geometry>
 
 #include <array>
 #include <cstddef>
@@ -83,6 +82,15 @@ Point_matrix read_points(const PolygonMesh& pm, const VertexPointMap& vpm, const
                                CGAL::to_double(p.z());
   }
   return points;
+}
+
+// Corner i of face `face` is t_i of its S-quad.
+inline Quad instance(const Tilable_problem& problem, const Point_matrix& points, std::size_t face)
+{
+  Quad q;
+  for(int i = 0; i < 4; ++i)
+    q[i] = points.row(problem.face_corners[face][i]).transpose();
+  return q;
 }
 
 // The clustering of `pm` read from the named parameters `face_cluster_map`
@@ -162,10 +170,7 @@ Tilable_problem make_tilable_problem(const PolygonMesh& pm, const NamedParameter
     for(std::size_t i : members)
     {
       const auto& c = problem.face_corners[i];
-      const Eigen::RowVector3d p0 = problem.points.row(c[0]);
-      const double six_volume = (problem.points.row(c[1]) - p0)
-        .dot((problem.points.row(c[2]) - p0).cross(problem.points.row(c[3]) - p0));
-      if(problem.allow_mirror && six_volume < 0)
+      if(problem.allow_mirror && signed_volume(instance(problem, problem.points, i)) < 0)
         problem.volume_groups.items.push_back({{c[0], c[3], c[2], c[1]}});
       else
         problem.volume_groups.items.push_back(c);
@@ -182,15 +187,6 @@ inline double mean_edge_length(const Tilable_problem& problem, const Point_matri
   for(const auto& e : problem.edges)
     sum += (points.row(e[0]) - points.row(e[1])).norm();
   return problem.edges.empty() ? 0.0 : sum / double(problem.edges.size());
-}
-
-// Corner i of face `face` is t_i of its S-quad.
-inline Quad instance(const Tilable_problem& problem, const Point_matrix& points, std::size_t face)
-{
-  Quad q;
-  for(int i = 0; i < 4; ++i)
-    q[i] = points.row(problem.face_corners[face][i]).transpose();
-  return q;
 }
 
 } // namespace internal

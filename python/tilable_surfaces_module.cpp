@@ -37,22 +37,22 @@ typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
 
 namespace {
 
-// The keyword arguments of make_k_set_tilable(). Their defaults are those
-// documented for cluster_quads() and optimize_tilable_surface(), except
-// `iterations`, whose default (< 0) leaves the solver's own.
+// The keyword arguments of make_k_set_tilable(). Their defaults are the
+// package's (defaults.h), except `iterations` and `fairness_weight`, whose
+// default (< 0) leaves the solver's own.
 struct Options
 {
   int k = 0;
-  unsigned int seed = 0;
-  std::size_t number_of_candidates = 10;
-  double similarity_threshold = 0.01;
-  double flexibility_penalty = 0.5;
+  unsigned int seed = TS::defaults::random_seed;
+  std::size_t number_of_candidates = TS::defaults::number_of_candidates;
+  double similarity_threshold = TS::defaults::similarity_threshold;
+  double flexibility_penalty = TS::defaults::flexibility_penalty;
   std::string orientation_policy = "proper_rigid_motions";
-  double distance_weight = 1e-4;
+  double distance_weight = TS::defaults::distance_weight;
   double fairness_weight = -1; // negative: the solver's default
   std::string solver = "gauss-newton";
   int iterations = -1;
-  double congruence_tolerance = 1e-6;
+  double congruence_tolerance = TS::defaults::congruence_tolerance;
   int threads = 0;
   bool planar_tiles = false;
 };
@@ -225,8 +225,8 @@ py::dict make_k_set_tilable(const py::object& vertices, const py::object& faces,
                 .solver(solver)
                 .congruence_tolerance(o.congruence_tolerance)
                 .planar_tiles(o.planar_tiles);
-    r = o.iterations >= 0 ? TS::make_k_set_tilable(mesh, np.number_of_iterations(o.iterations))
-                          : TS::make_k_set_tilable(mesh, np);
+    r = o.iterations >= 0 ? TS::make_k_set_tilable<CGAL::Parallel_if_available_tag>(mesh, np.number_of_iterations(o.iterations))
+                          : TS::make_k_set_tilable<CGAL::Parallel_if_available_tag>(mesh, np);
   }
   return result_dict(mesh, r);
 }

@@ -52,7 +52,7 @@ struct Run_record
   std::map<std::string, double> phase_seconds; // summed over repeated phases
 };
 
-struct Budget_visitor
+struct Budget_visitor : TS::Default_visitor
 {
   Run_record* record;
 
@@ -98,7 +98,8 @@ bool run(const std::string& name, Mesh& mesh, std::size_t k, double budget, doub
   record.budget = budget;
   record.clock.start();
   const TS::K_set_tilable_result r =
-    TS::make_k_set_tilable(mesh, TS::parameters::number_of_tiles(k).visitor(Budget_visitor{&record}));
+    TS::make_k_set_tilable<CGAL::Parallel_if_available_tag>(
+      mesh, TS::parameters::number_of_tiles(k).visitor(Budget_visitor{{}, &record}));
   const TS::Tilability_measure& m = r.optimization.measure;
   char cells[160];
   std::snprintf(cells, sizeof cells, "%.1f%s | %.0f | %.1e | %zu | %.2f", r.total_time,

@@ -67,11 +67,13 @@ struct Options
   int k = 0;
   double max_deviation = -1; // negative: K is given
   std::vector<std::size_t> sweep_k;
-  double distance_weight = 1e-4, fairness_weight = -1; // negative: the solver's default
-  double tangential_weight = 0.1;
-  int optimized_candidates = 0, improvement_rounds = 2; // 0: the package's default
-  int candidates = 10, iterations = -1, threads = 0;
-  unsigned int seed = 0;
+  double distance_weight = TS::defaults::distance_weight;
+  double fairness_weight = -1; // negative: the solver's default
+  double tangential_weight = TS::defaults::tangential_weight;
+  int optimized_candidates = 0; // 0: the package's default
+  int improvement_rounds = TS::defaults::number_of_improvement_rounds;
+  int candidates = int(TS::defaults::number_of_candidates), iterations = -1, threads = 0;
+  unsigned int seed = TS::defaults::random_seed;
   std::string solver = "gauss-newton";
   bool fixed_boundary = false, mirror = false, planar = false, ascii = false, quiet = false;
 };
@@ -144,24 +146,24 @@ Options parse(int argc, char** argv, bool& help)
     ("catalog", po::value<std::string>(&o.catalog), "tile catalog, .csv or .json")
     ("components", po::value<std::string>(&o.components),
      "PLY picture of the edge-sharing components (paper Fig. 6)")
-    ("distance-weight", po::value<double>(&o.distance_weight)->default_value(1e-4),
+    ("distance-weight", po::value<double>(&o.distance_weight)->default_value(o.distance_weight),
      "mu1, closeness to the input")
     ("fairness-weight", po::value<double>(&o.fairness_weight),
      "mu2: default solver, rigidity of the displacement (default 1e-6); paper-cg, the paper's "
      "fairness (default 1e-4)")
-    ("tangential-weight", po::value<double>(&o.tangential_weight)->default_value(0.1),
+    ("tangential-weight", po::value<double>(&o.tangential_weight)->default_value(o.tangential_weight),
      "default solver: cost of sliding in the input surface relative to leaving it, in (0, 1]")
     ("optimized-candidates", po::value<int>(&o.optimized_candidates)->default_value(0),
      "default solver: clusterings optimized fully, the closest result is kept (0: 2 + 10000 / faces, at most 12)")
-    ("improvement-rounds", po::value<int>(&o.improvement_rounds)->default_value(2),
+    ("improvement-rounds", po::value<int>(&o.improvement_rounds)->default_value(o.improvement_rounds),
      "default solver: rounds of split, merge and re-optimization, each kept only if better")
-    ("candidates", po::value<int>(&o.candidates)->default_value(10),
+    ("candidates", po::value<int>(&o.candidates)->default_value(o.candidates),
      "candidate configurations kept while clustering")
     ("solver", po::value<std::string>(&o.solver)->default_value("gauss-newton"),
      "gauss-newton (exact, default) or paper-cg (the paper's conjugate gradient)")
     ("fixed-boundary", po::bool_switch(&o.fixed_boundary), "boundary vertices do not move")
     ("iterations", po::value<int>(&o.iterations), "maximum solver iterations")
-    ("seed", po::value<unsigned int>(&o.seed)->default_value(0), "random seed")
+    ("seed", po::value<unsigned int>(&o.seed)->default_value(o.seed), "random seed")
     ("threads", po::value<int>(&o.threads)->default_value(0), "threads (0: all cores)")
     ("mirror", po::bool_switch(&o.mirror),
      "a panel may be the mirror image of its mold (cut from the mirrored mold)")
@@ -266,7 +268,7 @@ Mesh read_input(const std::string& path)
 }
 
 // Progress on stderr: one line per phase, one per solver iteration.
-struct Progress_visitor
+struct Progress_visitor : TS::Default_visitor
 {
   bool quiet = false;
   bool iteration(int it, double congruence, double objective)
@@ -400,11 +402,11 @@ int run(const Options& o)
               .number_of_iterations(o.iterations >= 0 ? o.iterations : TS::default_number_of_iterations(solver))
               .visitor(progress);
   if(!o.sweep.empty())
-    return write_curve(o, TS::k_set_tilable_curve(mesh, o.sweep_k, np), timer);
+    return write_curve(o, TS::k_set_tilable_curve<CGAL::Parallel_if_available_tag>(mesh, o.sweep_k, np), timer);
   const int largest_k = o.k > 0 ? o.k : int(num_faces(mesh));
   TS::K_set_tilable_result result = o.max_deviation >= 0
-    ? TS::make_k_set_tilable(mesh, np.max_deviation(o.max_deviation).number_of_tiles(largest_k))
-    : TS::make_k_set_tilable(mesh, np.number_of_tiles(o.k));
+    ? TS::make_k_set_tilable<CGAL::Parallel_if_available_tag>(mesh, np.max_deviation(o.max_deviation).number_of_tiles(largest_k))
+    : TS::make_k_set_tilable<CGAL::Parallel_if_available_tag>(mesh, np.number_of_tiles(o.k));
 
   CGAL::Real_timer write_timer;
   write_timer.start();

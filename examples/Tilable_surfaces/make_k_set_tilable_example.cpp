@@ -31,7 +31,8 @@ int main(int argc, char** argv)
   auto cluster = mesh.add_property_map<Mesh::Face_index, int>("f:cluster", 0).first;
   auto orientation = mesh.add_property_map<Mesh::Face_index, unsigned char>("f:orientation", 0).first;
 
-  const TS::K_set_tilable_result result = TS::make_k_set_tilable(
+  // Parallel_if_available_tag: with TBB, the steps use every core (same result).
+  const TS::K_set_tilable_result result = TS::make_k_set_tilable<CGAL::Parallel_if_available_tag>(
     mesh, TS::parameters::number_of_tiles(k).face_cluster_map(cluster).face_orientation_map(orientation));
 
   const TS::Tilability_measure& m = result.optimization.measure;

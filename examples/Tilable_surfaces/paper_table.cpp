@@ -159,7 +159,7 @@ int main(int argc, char** argv)
       for(const auto& solver : solvers)
       {
         Mesh mesh = input;
-        runs.push_back({solver.first, TS::make_k_set_tilable(
+        runs.push_back({solver.first, TS::make_k_set_tilable<CGAL::Parallel_if_available_tag>(
           mesh, TSP::number_of_tiles(k).solver(solver.second).random_seed(0u))});
       }
       print_rows(row.first, k, runs, terms);

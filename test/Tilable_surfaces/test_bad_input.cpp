@@ -217,7 +217,7 @@ TEST(BadInput, EveryEntryPointThrowsNamingTheCulpritAndTouchesNothing)
 
 TEST(BadInput, TileCatalogWritersRefuseNonFiniteTilesBeforeWriting)
 {
-  std::vector<TS::IO::Tile> tiles(3);
+  std::vector<TS::Tile> tiles(3);
   for(auto& t : tiles)
     for(int i = 0; i < 4; ++i) t.corners[i] = Eigen::Vector3d(i & 1, i >> 1, 0);
   tiles[2].corners[3].y() = not_a_number;

@@ -9,6 +9,7 @@
 
 #include <gtest/gtest.h>
 
+#include <map>
 #include <set>
 #include <string>
 #include <vector>
@@ -151,6 +152,104 @@ TEST(KSetTilableSurface, SetClusteringChecksTheMaps)
   EXPECT_EQ(get(surface.face_orientation_map(), Mesh::Face_index(7)), 4);
 }
 
+// The maps the object hands out read its current clustering, also after
+// set_clustering() and after the fidelity search restored its best state.
+TEST(KSetTilableSurface, MapsHandedOutStayValid)
+{
+  Mesh mesh = read("monkey_saddle.off");
+  TS::K_set_tilable_surface<Mesh> surface(mesh);
+  const auto cluster = surface.face_cluster_map();
+  const auto orientation = surface.face_orientation_map();
+  std::map<Mesh::Face_index, int> parity, zero;
+  for(auto f : faces(mesh)) { parity[f] = int(f.idx() % 2); zero[f] = 0; }
+  surface.set_clustering(boost::make_assoc_property_map(parity), boost::make_assoc_property_map(zero));
+  for(auto f : faces(mesh))
+  {
+    EXPECT_EQ(get(cluster, f), int(f.idx() % 2));
+    EXPECT_EQ(get(orientation, f), 0);
+  }
+  surface.cluster(TSP::number_of_tiles(5));
+  surface.optimize_closest(TSP::number_of_optimized_candidates(2).number_of_improvement_rounds(1));
+  const auto fresh = surface.face_cluster_map();
+  for(auto f : faces(mesh))
+    EXPECT_EQ(get(cluster, f), get(fresh, f));
+}
+
+// The edits use the similarity threshold and orientation policy that
+// cluster() was given, not the defaults: re-tagging through the object gives
+// what the free function gives with those parameters.
+TEST(KSetTilableSurface, EditsKeepTheCallersParameters)
+{
+  Mesh mesh = read("monkey_saddle.off");
+  TS::K_set_tilable_surface<Mesh> surface(mesh);
+  const double threshold = 2.0; // every orientation within 2 mean edges is admissible
+  surface.cluster(TSP::number_of_tiles(6).similarity_threshold(threshold).orientation_policy(TS::NO_TURNED_OVER_PANELS));
+  std::map<Mesh::Face_index, int> cluster, orientation;
+  auto retag_copy = [&](const auto& np) {
+    for(auto f : faces(mesh))
+    {
+      cluster[f] = get(surface.face_cluster_map(), f);
+      orientation[f] = get(surface.face_orientation_map(), f);
+    }
+    const std::size_t dof = TS::retag_orientations(
+      mesh, np.face_cluster_map(boost::make_assoc_property_map(cluster))
+              .face_orientation_map(boost::make_assoc_property_map(orientation)));
+    return std::make_pair(dof, orientation);
+  };
+  const auto with_callers = retag_copy(TSP::similarity_threshold(threshold).orientation_policy(TS::NO_TURNED_OVER_PANELS));
+  const auto with_defaults = retag_copy(TSP::default_values());
+  const std::size_t dof = surface.retag_orientations();
+  std::map<Mesh::Face_index, int> retagged;
+  for(auto f : faces(mesh))
+  {
+    retagged[f] = get(surface.face_orientation_map(), f);
+    EXPECT_LT(retagged[f], 4) << "a turned-over panel under NO_TURNED_OVER_PANELS";
+  }
+  EXPECT_EQ(dof, with_callers.first);
+  EXPECT_EQ(retagged, with_callers.second);
+  EXPECT_NE(retagged, with_defaults.second) << "the parameters make no difference on this mesh";
+}
+
+namespace {
+
+// Keeps what it saw in itself: only the object given reaches these members.
+struct Recording_visitor : TS::Default_visitor
+{
+  int iterations = 0;
+  std::vector<std::string> phases;
+  bool iteration(int, double, double)
+  {
+    ++iterations;
+    return true;
+  }
+  void phase(const char* name, double seconds)
+  {
+    EXPECT_GE(seconds, 0.0);
+    phases.push_back(name);
+  }
+};
+
+} // namespace
+
+// Given as std::ref, the user's visitor itself is called by every stage:
+// validation, the clustering's phases, the fidelity search and each solver.
+TEST(MakeKSetTilable, OneVisitorFollowsEveryStage)
+{
+  Mesh mesh = read("monkey_saddle.off");
+  Recording_visitor visitor;
+  const TS::K_set_tilable_result r =
+    TS::make_k_set_tilable(mesh, TSP::number_of_tiles(5).visitor(std::ref(visitor)));
+  // Every candidate's solve counts here, the kept one's in the result.
+  EXPECT_GT(r.optimization.iterations, 0);
+  EXPECT_GE(visitor.iterations, r.optimization.iterations);
+  const std::vector<std::string> expected_order = {"validation", "threshold clustering", "merges",
+                                                   "other candidates", "orientations", "clustering",
+                                                   "displacement prediction", "candidate optimization"};
+  ASSERT_GE(visitor.phases.size(), expected_order.size());
+  EXPECT_EQ(std::vector<std::string>(visitor.phases.begin(), visitor.phases.begin() + 8), expected_order);
+  EXPECT_EQ(visitor.phases.back(), "optimization");
+}
+
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
 
@@ -172,7 +271,7 @@ namespace {
 
 // Stops the solver at its first iteration; the copies the pipeline makes
 // share the count.
-struct Stop_at_once_visitor
+struct Stop_at_once_visitor : TS::Default_visitor
 {
   int* iterations;
   bool iteration(int, double, double)
@@ -192,8 +291,51 @@ TEST(MakeKSetTilable, VisitorThatStopsEndsTheSearch)
   Mesh mesh = read("de_beers_ginza.off");
   int iterations = 0;
   const TS::K_set_tilable_result r =
-    TS::make_k_set_tilable(mesh, TSP::number_of_tiles(30).visitor(Stop_at_once_visitor{&iterations}));
+    TS::make_k_set_tilable(mesh, TSP::number_of_tiles(30).visitor(Stop_at_once_visitor{{}, &iterations}));
   EXPECT_EQ(iterations, 1);
   EXPECT_TRUE(r.optimization.stopped_by_visitor);
   EXPECT_EQ(r.optimization.iterations, 1);
 }
+
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/info.h>
+#include <tbb/task_arena.h>
+
+namespace {
+
+// Records how many threads the arena it is called in may use.
+struct Concurrency_probe : TS::Default_visitor
+{
+  std::set<int>* seen;
+  bool iteration(int, double, double)
+  {
+    seen->insert(tbb::this_task_arena::max_concurrency());
+    return true;
+  }
+};
+
+} // namespace
+
+// Sequential_tag runs every step on one thread, the parallel tag on all of
+// them, and both give the same result.
+TEST(MakeKSetTilable, ConcurrencyTagChangesTheThreadsNotTheResult)
+{
+  const Mesh input = read("monkey_saddle.off");
+  auto run = [&](auto tag, std::set<int>& seen, std::vector<int>& cluster) {
+    Mesh mesh = input;
+    auto c = mesh.add_property_map<Mesh::Face_index, int>("f:c", -1).first;
+    TS::make_k_set_tilable<decltype(tag)>(
+      mesh, TSP::number_of_tiles(7).face_cluster_map(c).visitor(Concurrency_probe{{}, &seen}));
+    for(auto f : faces(mesh)) cluster.push_back(c[f]);
+    return points(mesh);
+  };
+  std::set<int> sequential_threads, parallel_threads;
+  std::vector<int> sequential_cluster, parallel_cluster;
+  const auto sequential = run(CGAL::Sequential_tag(), sequential_threads, sequential_cluster);
+  const auto parallel = run(CGAL::Parallel_tag(), parallel_threads, parallel_cluster);
+  EXPECT_EQ(sequential_threads, std::set<int>{1});
+  EXPECT_EQ(parallel_threads, std::set<int>{tbb::info::default_concurrency()});
+  EXPECT_EQ(sequential_cluster, parallel_cluster);
+  EXPECT_EQ(sequential, parallel);
+}
+#endif

@@ -95,7 +95,7 @@ TEST(MirroredPanels, OnAMirrorSymmetricSurfaceAtLeastAsCloseAsProperMotions)
     EXPECT_LE(rm.optimization.measure.hausdorff_distance, rp.optimization.measure.hausdorff_distance)
       << "K = " << k;
     std::size_t total = 0;
-    for(const TS::IO::Tile& t : rm.tiles)
+    for(const TS::Tile& t : rm.tiles)
     {
       EXPECT_LE(t.mirrored_count, t.instance_count);
       total += t.instance_count;

@@ -56,7 +56,7 @@ bool all_finite(const Mesh& mesh)
 }
 
 // Counts the iterations and stops after `stop_after`.
-struct Counting_visitor : TS::Default_optimization_visitor
+struct Counting_visitor : TS::Default_visitor
 {
   int* calls;
   int stop_after;
@@ -223,7 +223,7 @@ TEST(Optimize, PaperConjugateGradientLowersTheConstraintTerms)
   EXPECT_GT(r.iterations, 0);
 }
 
-// Method notes §4b: on the same clustering the constrained solver reaches
+// User manual, section Optimization: on the same clustering the constrained solver reaches
 // the tolerance, moving less than the paper's penalty method, whose
 // weights mu1 = mu2 are lowered from the default until it reaches the same
 // congruence; if none does, it must not claim convergence.

@@ -72,7 +72,7 @@ TEST(PlanarPanels, EveryPanelIsPlanarAndCongruentByIndependentChecks)
     EXPECT_LE(worst_diagonal_distance(mesh), 1e-6) << name;
     EXPECT_LE(r.optimization.measure.planarity_error, 1e-6) << name;
     EXPECT_LE(congruence_by_umeyama(mesh, cluster, orientation), 1e-6) << name;
-    for(const TS::IO::Tile& t : r.tiles)
+    for(const TS::Tile& t : r.tiles)
     {
       const std::array<double, 4> e = TS::edge_lengths(t.corners);
       EXPECT_LE(TS::planarity_defect(t.corners), 1e-5 * (e[0] + e[1] + e[2] + e[3]) / 4)

@@ -17,9 +17,9 @@ namespace {
 
 // Unit square with t3 lifted by h: edges 1, 1, sqrt(1+h^2), sqrt(1+h^2),
 // diagonals sqrt(2), sqrt(2+h^2), signed volume h/6, planarity h.
-TS::IO::Tile lifted_square(double h)
+TS::Tile lifted_square(double h)
 {
-  TS::IO::Tile t;
+  TS::Tile t;
   t.id = 3;
   t.instance_count = 17;
   t.corners = TS::Quad{{Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(1, 1, 0), Vector3d(0, 1, h)}};

@@ -5,7 +5,7 @@
 #define CGAL_TILABLE_SURFACES_EDGE_SHARING_GRAPH_H
 
 /// \file Edge_sharing_graph.h
-/// The edge-sharing graph of a clustering (paper §3, method notes §3): its
+/// The edge-sharing graph of a clustering (paper §3; user manual, section Definitions): its
 /// connected components are the distinct edge lengths of the tiled surface,
 /// their number the degree of flexibility.
 
@@ -13,12 +13,12 @@
 #include <CGAL/Tilable_surfaces/named_parameters.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 #include <CGAL/Tilable_surfaces/validation.h>
+#include <CGAL/Tilable_surfaces/internal/Union_find.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <boost/graph/graph_traits.hpp>
-#include <boost/pending/disjoint_sets.hpp>
 #include <boost/property_map/property_map.hpp>
 
 #include <array>
@@ -155,12 +155,10 @@ public:
                             Invalid_input::FACE, fi);
 
       const Quad_orientation orientation(o);
-      // Face edge j (from v_j to v_{j+1}) is next^{j+1}(halfedge(f)), since
-      // the face's vertex list starts at the target of halfedge(f).
-      halfedge_descriptor h = halfedge(f, pm);
+      const auto face_edges = face_edge_halfedges(f, pm);
       for(int j = 0; j < 4; ++j)
       {
-        h = next(h, pm);
+        const halfedge_descriptor h = face_edges[std::size_t(j)];
         const std::size_t node = 4 * std::size_t(c) + orientation.template_edge(j);
         std::size_t& edge_node = edge_nodes[get(m_edge_index_map, edge(h, pm))];
         if(edge_node == no_node())
@@ -230,28 +228,25 @@ public:
   double length_deviation_after_merge(std::size_t kept, std::size_t removed,
                                       Quad_orientation correspondence) const
   {
-    // At most 8 roots take part: a union-find over linear scans.
-    std::array<std::size_t, 8> root, up;
+    // At most 8 components take part, each with its statistics at its slot.
+    internal::Small_union_find<8> components;
     std::array<Length_statistics, 8> merged;
-    std::size_t n = 0;
-    auto local = [&](std::size_t node) {
-      const std::size_t r = find(node);
-      for(std::size_t i = 0; i < n; ++i)
-        if(root[i] == r) return i;
-      root[n] = r; up[n] = n; merged[n] = m_lengths[r];
-      return n++;
+    auto slot = [&](std::size_t node) {
+      const std::size_t r = find(node), seen = components.size();
+      const std::size_t i = components.slot(r);
+      if(components.size() > seen) merged[i] = m_lengths[r];
+      return components.sets().find(i);
     };
-    auto top = [&](std::size_t i) { while(up[i] != i) i = up[i]; return i; };
     double deviation = m_length_deviation;
     for(int k = 0; k < 4; ++k)
     {
-      const std::size_t a = top(local(4 * kept + k)),
-                        b = top(local(4 * removed + correspondence.face_edge(k)));
+      const std::size_t a = slot(4 * kept + k), b = slot(4 * removed + correspondence.face_edge(k));
       if(a == b)
         continue;
       deviation += merged[a].deviation_if_joined(merged[b]);
       merged[a].join(merged[b]);
-      up[b] = a;
+      components.sets().unite(a, b);
+      merged[components.sets().find(a)] = merged[a];
     }
     return deviation;
   }
@@ -312,9 +307,7 @@ private:
   {
     const std::size_t n = 4 * number_of_clusters;
     m_alive.assign(number_of_clusters, true);
-    m_sets = Disjoint_sets(n);
-    for(std::size_t i = 0; i < n; ++i)
-      m_sets.make_set(i);
+    m_sets.reset(n);
     m_lengths.assign(n, Length_statistics());
     m_length_deviation = 0;
     m_number_of_components = n;
@@ -329,13 +322,13 @@ private:
     m_length_deviation += m_lengths[ra].deviation_if_joined(m_lengths[rb]);
     Length_statistics joined = m_lengths[ra];
     joined.join(m_lengths[rb]);
-    m_sets.link(ra, rb);
+    m_sets.unite(ra, rb);
     m_lengths[find(ra)] = joined;
     --m_number_of_components;
     m_ids_valid = false;
   }
 
-  std::size_t find(std::size_t node) const { return m_sets.find_set(node); }
+  std::size_t find(std::size_t node) const { return m_sets.find(node); }
 
   void update_component_ids() const
   {
@@ -354,7 +347,6 @@ private:
     m_ids_valid = true;
   }
 
-  typedef boost::disjoint_sets_with_storage<> Disjoint_sets;
   typedef typename CGAL::GetInitializedEdgeIndexMap<PolygonMesh>::const_type Edge_index_map;
 
   Edge_index_map m_edge_index_map;
@@ -362,7 +354,7 @@ private:
   // so copies share it: copying the graph costs O(K), not O(#edges).
   std::shared_ptr<const std::vector<std::size_t> > m_edge_node;
   std::vector<bool> m_alive;
-  mutable Disjoint_sets m_sets{0};       // find_set() compresses paths
+  internal::Union_find<> m_sets;
   std::size_t m_number_of_components = 0;
   std::vector<Length_statistics> m_lengths; // valid at the roots
   double m_length_deviation = 0;

@@ -9,14 +9,16 @@
 /// optimize, measure, export. `make_k_set_tilable()` runs it in one call.
 
 #include <CGAL/Tilable_surfaces/Edge_sharing_graph.h>
-#include <CGAL/Tilable_surfaces/IO/tile_catalog.h>
 #include <CGAL/Tilable_surfaces/cluster_editing.h>
 #include <CGAL/Tilable_surfaces/cluster_quads.h>
+#include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/exceptions.h>
 #include <CGAL/Tilable_surfaces/measure.h>
 #include <CGAL/Tilable_surfaces/named_parameters.h>
 #include <CGAL/Tilable_surfaces/optimize_tilable_surface.h>
 #include <CGAL/Tilable_surfaces/validation.h>
+#include <CGAL/Tilable_surfaces/visitor.h>
+#include <CGAL/Tilable_surfaces/internal/parallel_for.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 
@@ -24,7 +26,6 @@
 
 #include <algorithm>
 #include <limits>
-#include <memory>
 #include <string>
 #include <utility>
 
@@ -32,30 +33,8 @@
 
 namespace CGAL {
 namespace Tilable_surfaces {
-/// \ingroup PkgTilableSurfacesRef
-/// The default of `number_of_optimized_candidates` for a mesh of
-/// `number_of_faces` quads: 2 + 10000 / `number_of_faces`, at most 12.
-/// Solves of small meshes take a second or less, and there the ranking of the
-/// candidates is least reliable (tunnel stand-in, 1152 quads, K = 8: the
-/// best candidate ranks 8th and ends 1.6 times closer than the first).
-inline std::size_t default_number_of_optimized_candidates(std::size_t number_of_faces)
-{
-  return (std::min)(std::size_t(12), 2 + 10000 / (std::max)(number_of_faces, std::size_t(1)));
-}
 
 namespace internal {
-
-// Visitors may have a `phase(name, seconds)` hook (progress reports); the
-// optimization visitors of `optimize_tilable_surface()` need not.
-template <typename Visitor>
-auto notify_phase(Visitor& visitor, const char* name, double seconds, int)
-  -> decltype(visitor.phase(name, seconds), void())
-{
-  visitor.phase(name, seconds);
-}
-
-template <typename Visitor>
-void notify_phase(Visitor&, const char*, double, long) {}
 
 // Whether result `a` is better than `b`: tilable before not, then closer to
 // the input (symmetric Hausdorff distance), or, neither being tilable, the
@@ -81,17 +60,23 @@ inline bool is_better(const Optimization_result& a, const Optimization_result& b
 /// `measure()` / `tile_catalog()` report on the result.
 ///
 /// The object keeps the cluster and orientation of every face (readable
-/// through `face_cluster_map()` and `face_orientation_map()`) and a copy of
-/// the input, against which the result is measured. It refers to the mesh
+/// through `face_cluster_map()` and `face_orientation_map()`) and the input
+/// positions, against which the result is measured. It refers to the mesh
 /// passed to the constructor, whose vertices only `optimize()` moves; the
 /// connectivity must not change while the object is used.
 ///
 /// \tparam PolygonMesh a model of `FaceListGraph` and `MutableFaceGraph`
-///   with quad faces, copy constructible.
+///   with quad faces.
 /// \tparam VertexPointMap a model of `ReadWritePropertyMap` from vertices to
 ///   points, by default the mesh's internal one.
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` (default),
+///   `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`: whether the
+///   steps may use several threads (TBB). The results are the same. Last, with
+///   a default, as in CGAL's `Variational_shape_approximation`: a class
+///   template cannot default a first parameter and deduce the others.
 template <typename PolygonMesh,
-          typename VertexPointMap = typename CGAL::GetVertexPointMap<PolygonMesh>::type>
+          typename VertexPointMap = typename CGAL::GetVertexPointMap<PolygonMesh>::type,
+          typename ConcurrencyTag = CGAL::Sequential_tag>
 class K_set_tilable_surface
 {
   typedef typename CGAL::GetInitializedFaceIndexMap<PolygonMesh>::const_type Face_index_map;
@@ -105,26 +90,24 @@ public:
   typedef boost::iterator_property_map<std::vector<int>::iterator, Face_index_map, int, int&>
     Face_cluster_map;
   /// Readable and writable map from faces to their orientation (0..7,
-  /// method notes §1) relative to their cluster's S-quad.
+  /// user manual, section Definitions) relative to their cluster's S-quad.
   typedef Face_cluster_map Face_orientation_map;
 
-  /// Checks `pm` (`validate_quad_mesh()`) and keeps a copy of it, with the
-  /// points of `vpm`, as the input.
+  /// Checks `pm` (`validate_quad_mesh()`) and keeps the points of `vpm` as
+  /// the input.
   /// \throws Invalid_input if `pm` is not a valid quad mesh.
   K_set_tilable_surface(PolygonMesh& pm, VertexPointMap vpm)
     : m_mesh(pm)
     , m_vpm(vpm)
     , m_fim(CGAL::get_initialized_face_index_map(pm))
+    , m_vim(CGAL::get_initialized_vertex_index_map(pm))
     , m_cluster(num_faces(pm), 0)
     , m_orientation(num_faces(pm), 0)
   {
     validate_quad_mesh(pm, parameters::vertex_point_map(m_vpm));
-    m_input.reset(new PolygonMesh(pm));
-    m_input_vim = CGAL::get_initialized_vertex_index_map(*m_input);
-    const Vertex_index_map vim = CGAL::get_initialized_vertex_index_map(pm);
     m_input_points.resize(num_vertices(pm));
     for(auto v : vertices(pm))
-      m_input_points[get(vim, v)] = get(m_vpm, v);
+      m_input_points[get(m_vim, v)] = get(m_vpm, v);
   }
 
   /// The same, with the mesh's internal vertex point map.
@@ -140,11 +123,11 @@ public:
   {
     restore_input();
     m_policy = internal::orientation_policy(np);
-    m_clustering = cluster_quads(m_mesh, with_own_maps(np));
+    with_concurrency([&] { m_clustering = cluster_quads(m_mesh, with_own_maps(np)); });
     m_number_of_clusters = m_clustering.cluster_sizes.size();
     m_is_clustered = true;
     m_similarity_threshold = parameters::choose_parameter(
-      parameters::get_parameter(np, internal_np::similarity_threshold), 0.01);
+      parameters::get_parameter(np, internal_np::similarity_threshold), defaults::similarity_threshold);
     return m_clustering;
   }
 
@@ -176,8 +159,9 @@ public:
       if(!used[c])
         throw Invalid_input("cluster " + std::to_string(c) + " has no face; ids must be 0..K-1",
                             Invalid_input::PARAMETER);
-    m_cluster.swap(cluster);
-    m_orientation.swap(orientation);
+    // Copied into place: the maps handed out keep reading them.
+    std::copy(cluster.begin(), cluster.end(), m_cluster.begin());
+    std::copy(orientation.begin(), orientation.end(), m_orientation.begin());
     m_number_of_clusters = k;
     m_clustering = Clustering_result();
     m_is_clustered = true;
@@ -220,9 +204,12 @@ public:
     const std::vector<std::size_t>& label = m_clustering.candidates[i].face_cluster;
     const std::size_t k = m_number_of_clusters;
     const auto np = parameters::vertex_point_map(m_vpm).face_index_map(m_fim);
-    const internal::Cluster_shapes shapes = internal::finished_clustering(
-      m_mesh, m_fim, m_vpm, internal::face_quads(m_mesh, m_fim, np), label, k, m_policy,
-      m_similarity_threshold * mean_edge_length(m_mesh, np));
+    internal::Cluster_shapes shapes;
+    with_concurrency([&] {
+      shapes = internal::finished_clustering(m_mesh, m_fim, m_vpm, internal::face_quads(m_mesh, m_fim, np),
+                                             label, k, m_policy,
+                                             m_similarity_threshold * mean_edge_length(m_mesh, np));
+    });
     for(std::size_t f = 0; f < label.size(); ++f)
     {
       m_cluster[f] = int(label[f]);
@@ -239,7 +226,9 @@ public:
   {
     require_clustering();
     restore_input();
-    return Tilable_surfaces::predict_displacement(m_mesh, with_own_maps(np));
+    Displacement_prediction prediction;
+    with_concurrency([&] { prediction = Tilable_surfaces::predict_displacement(m_mesh, with_own_maps(np)); });
+    return prediction;
   }
 
   /// Looks for the tilable result closest to the input among several
@@ -281,58 +270,33 @@ public:
   /// Hausdorff distance (or, among non-tilable ones, the smaller congruence
   /// error). So the rounds never return a worse result than the candidates.
   /// The mesh, the maps and `optimization()` hold the best result at the
-  /// end. Takes the parameters of `optimize()`; the visitor's optional
-  /// `phase(name, seconds)` hook is called after each candidate and round.
+  /// end. Takes the parameters of `optimize()`; the visitor's
+  /// `phase(name, seconds)` is called after each candidate and round.
   /// Once the visitor stops a solve (`Optimization_result::stopped_by_visitor`),
   /// no further candidate or round is optimized.
   template <typename CGAL_NP_TEMPLATE_PARAMETERS>
-  const Optimization_result& optimize_closest(const CGAL_NP_CLASS& np = parameters::default_values())
+  const Optimization_result& optimize_closest(const CGAL_NP_CLASS& user_np = parameters::default_values())
   {
     using parameters::choose_parameter;
     using parameters::get_parameter;
     require_clustering();
     if(m_clustering.candidates.empty())
-      return optimize(np);
-    auto visitor = internal::visitor_of(np);
+      return optimize(user_np);
+    auto&& visitor = internal::visitor_of(user_np);
+    const auto np = internal::with_visitor(user_np, visitor);
     const std::size_t optimized = (std::max)(std::size_t(1), std::size_t(choose_parameter(
       get_parameter(np, internal_np::number_of_optimized_candidates),
       default_number_of_optimized_candidates(num_faces(m_mesh)))));
-    const int rounds = choose_parameter(get_parameter(np, internal_np::number_of_improvement_rounds), 2);
+    const int rounds = choose_parameter(get_parameter(np, internal_np::number_of_improvement_rounds),
+                                      defaults::number_of_improvement_rounds);
     CGAL::Real_timer timer;
     timer.start();
 
-    // 1. Candidates ranked two ways, taken in turn: by predicted
-    // displacement, and by the spread of edge lengths they tie together.
-    std::vector<std::pair<double, std::size_t> > by_prediction, by_spread;
-    for(std::size_t i = 0; i < m_clustering.candidates.size(); ++i)
-    {
-      use_candidate(i);
-      Clustering_candidate& candidate = m_clustering.candidates[i];
-      candidate.predicted_displacement = predict_displacement(np).max;
-      by_prediction.push_back({candidate.predicted_displacement, i});
-      by_spread.push_back({candidate.length_deviation, i});
-    }
+    // 1. The candidates most likely to end closest, each optimized fully.
+    const std::vector<std::size_t> ranked = ranked_candidates(np, optimized);
     const int user_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
                                                  default_number_of_iterations(CONSTRAINED_GAUSS_NEWTON));
-    std::sort(by_prediction.begin(), by_prediction.end());
-    std::sort(by_spread.begin(), by_spread.end());
-    std::vector<std::size_t> ranked;
-    for(std::size_t r = 0; r < by_prediction.size(); ++r)
-      for(std::size_t i : {by_prediction[r].second, by_spread[r].second})
-        if(std::find(ranked.begin(), ranked.end(), i) == ranked.end())
-          ranked.push_back(i);
-    ranked.resize((std::min)(optimized, ranked.size()));
-    // Then a few segment clusterings, in the order they were made: both
-    // rankings underrate their long-range ties.
-    std::size_t extra = (optimized + 3) / 4;
-    for(std::size_t i = 0; i < m_clustering.candidates.size() && extra > 0; ++i)
-      if(m_clustering.candidates[i].origin == Clustering_candidate::GRID_SEGMENTS &&
-         std::find(ranked.begin(), ranked.end(), i) == ranked.end())
-      {
-        ranked.push_back(i);
-        --extra;
-      }
-    internal::notify_phase(visitor, "displacement prediction", timer.time(), 0);
+    visitor.phase("displacement prediction", timer.time());
     State best;
     for(std::size_t r = 0; r < ranked.size(); ++r)
     {
@@ -347,7 +311,7 @@ public:
         best = state();
         m_clustering.chosen_candidate = ranked[r];
       }
-      internal::notify_phase(visitor, "candidate optimization", timer.time(), 0);
+      visitor.phase("candidate optimization", timer.time());
       if(m_optimization.stopped_by_visitor)
         break;
     }
@@ -380,7 +344,7 @@ public:
         ++failed_in_a_row;
       const bool round_stopped = m_optimization.stopped_by_visitor;
       set_state(best);
-      internal::notify_phase(visitor, "improvement round", timer.time(), 0);
+      visitor.phase("improvement round", timer.time());
       if(round_stopped)
         break;
     }
@@ -398,7 +362,8 @@ public:
   std::size_t merge_clusters(std::size_t a, std::size_t b)
   {
     require_clustering();
-    const std::size_t dof = Tilable_surfaces::merge_clusters(m_mesh, a, b, own_maps());
+    std::size_t dof = 0;
+    with_concurrency([&] { dof = Tilable_surfaces::merge_clusters(m_mesh, a, b, own_maps()); });
     --m_number_of_clusters;
     return dof;
   }
@@ -408,8 +373,9 @@ public:
   std::size_t split_cluster(std::size_t c, unsigned int random_seed = 0)
   {
     require_clustering();
-    const std::size_t dof =
-      Tilable_surfaces::split_cluster(m_mesh, c, own_maps().random_seed(random_seed));
+    std::size_t dof = 0;
+    with_concurrency(
+      [&] { dof = Tilable_surfaces::split_cluster(m_mesh, c, own_maps().random_seed(random_seed)); });
     ++m_number_of_clusters;
     return dof;
   }
@@ -420,7 +386,9 @@ public:
   std::size_t retag_orientations()
   {
     require_clustering();
-    return Tilable_surfaces::retag_orientations(m_mesh, own_maps());
+    std::size_t dof = 0;
+    with_concurrency([&] { dof = Tilable_surfaces::retag_orientations(m_mesh, own_maps()); });
+    return dof;
   }
 
   /// Moves the vertices of the mesh so that every face becomes congruent to
@@ -434,24 +402,32 @@ public:
   {
     require_clustering();
     restore_input();
-    m_optimization = optimize_tilable_surface(m_mesh, with_own_maps(np));
+    with_concurrency([&] { m_optimization = optimize_tilable_surface(m_mesh, with_own_maps(np)); });
     return m_optimization;
   }
 
   /// The result of the last `optimize()` call.
   const Optimization_result& optimization() const { return m_optimization; }
 
-  /// Measures the current mesh against the input (`measure_tilability()`).
+  /// Measures the current mesh against the input (`measure_tilability()`):
+  /// the same connectivity with the input positions.
   Tilability_measure measure()
   {
     require_clustering();
-    return measure_tilability(m_mesh, *m_input, own_maps(),
-                              parameters::vertex_point_map(boost::make_iterator_property_map(
-                                m_input_points.begin(), m_input_vim)));
+    Tilability_measure m;
+    with_concurrency([&] {
+      m = measure_tilability(m_mesh, m_mesh, own_maps(),
+                             parameters::vertex_point_map(input_point_map()).vertex_index_map(m_vim));
+    });
+    return m;
   }
 
-  /// The input mesh, as it was when the object was made.
-  const PolygonMesh& input_mesh() const { return *m_input; }
+  /// The positions of the input, as they were when the object was made: a
+  /// readable property map from the vertices of the mesh to points.
+  auto input_point_map() const
+  {
+    return boost::make_iterator_property_map(m_input_points.cbegin(), m_vim);
+  }
 
   /// Puts the input positions back in the mesh. Clustering, edits and solves
   /// call it first: they start from the input, never from a result.
@@ -459,24 +435,9 @@ public:
 
   /// The tile catalog of the current mesh: one tile per S-quad, with the
   /// measured worst deviation of its instances, in the mesh's units.
-  std::vector<IO::Tile> tile_catalog()
+  std::vector<Tile> tile_catalog()
   {
-    return tile_catalog(measure());
-  }
-
-  /// The tile catalog of a measurement made with this object.
-  static std::vector<IO::Tile> tile_catalog(const Tilability_measure& m)
-  {
-    std::vector<IO::Tile> tiles(m.s_quads.size());
-    for(std::size_t c = 0; c < tiles.size(); ++c)
-    {
-      tiles[c].id = c;
-      tiles[c].instance_count = m.cluster_sizes[c];
-      tiles[c].mirrored_count = m.cluster_mirrored_counts[c];
-      tiles[c].corners = m.s_quads[c];
-      tiles[c].worst_deviation = m.cluster_congruence_errors[c] * m.mean_edge_length;
-    }
-    return tiles;
+    return Tilable_surfaces::tile_catalog(measure());
   }
 
 private:
@@ -492,10 +453,9 @@ private:
   State state() const
   {
     State st;
-    const Vertex_index_map vim = CGAL::get_initialized_vertex_index_map(m_mesh);
     st.points.resize(num_vertices(m_mesh));
     for(auto v : vertices(m_mesh))
-      st.points[get(vim, v)] = get(m_vpm, v);
+      st.points[get(m_vim, v)] = get(m_vpm, v);
     st.cluster = m_cluster;
     st.orientation = m_orientation;
     st.number_of_clusters = m_number_of_clusters;
@@ -506,17 +466,16 @@ private:
   void set_state(const State& st)
   {
     write_points(st.points);
-    m_cluster = st.cluster;
-    m_orientation = st.orientation;
+    std::copy(st.cluster.begin(), st.cluster.end(), m_cluster.begin());
+    std::copy(st.orientation.begin(), st.orientation.end(), m_orientation.begin());
     m_number_of_clusters = st.number_of_clusters;
     m_optimization = st.optimization;
   }
 
   void write_points(const std::vector<Point>& points)
   {
-    const Vertex_index_map vim = CGAL::get_initialized_vertex_index_map(m_mesh);
     for(auto v : vertices(m_mesh))
-      put(m_vpm, v, points[get(vim, v)]);
+      put(m_vpm, v, points[get(m_vim, v)]);
   }
 
   // Three times the iterations the best result took, at least 30, at most
@@ -538,14 +497,13 @@ private:
   template <typename NP>
   bool improvement_edit(const NP& np, std::size_t rank)
   {
-    const Vertex_index_map vim = CGAL::get_initialized_vertex_index_map(m_mesh);
     std::vector<double> moved(m_number_of_clusters, 0.0);
     std::vector<std::size_t> size(m_number_of_clusters, 0);
     for(auto f : faces(m_mesh))
     {
       double sum = 0;
       for(auto v : CGAL::vertices_around_face(halfedge(f, m_mesh), m_mesh))
-        sum += internal::distance(get(m_vpm, v), m_input_points[get(vim, v)]);
+        sum += internal::distance(get(m_vpm, v), m_input_points[get(m_vim, v)]);
       moved[std::size_t(m_cluster[get(m_fim, f)])] += sum;
       ++size[std::size_t(m_cluster[get(m_fim, f)])];
     }
@@ -605,16 +563,60 @@ private:
     return true;
   }
 
+  // The candidates of the last cluster() that optimize_closest() optimizes:
+  // ranked two ways, taken in turn, by predicted displacement and by the
+  // spread of edge lengths they tie together, the `optimized` first; then a
+  // quarter as many segment clusterings, in the order they were made, since
+  // both rankings underrate their long-range ties.
+  template <typename NP>
+  std::vector<std::size_t> ranked_candidates(const NP& np, std::size_t optimized)
+  {
+    std::vector<std::pair<double, std::size_t> > by_prediction, by_spread;
+    for(std::size_t i = 0; i < m_clustering.candidates.size(); ++i)
+    {
+      use_candidate(i);
+      Clustering_candidate& candidate = m_clustering.candidates[i];
+      candidate.predicted_displacement = predict_displacement(np).max;
+      by_prediction.push_back({candidate.predicted_displacement, i});
+      by_spread.push_back({candidate.length_deviation, i});
+    }
+    std::sort(by_prediction.begin(), by_prediction.end());
+    std::sort(by_spread.begin(), by_spread.end());
+    std::vector<std::size_t> ranked;
+    for(std::size_t r = 0; r < by_prediction.size(); ++r)
+      for(std::size_t i : {by_prediction[r].second, by_spread[r].second})
+        if(std::find(ranked.begin(), ranked.end(), i) == ranked.end())
+          ranked.push_back(i);
+    ranked.resize((std::min)(optimized, ranked.size()));
+    std::size_t extra = (optimized + 3) / 4;
+    for(std::size_t i = 0; i < m_clustering.candidates.size() && extra > 0; ++i)
+      if(m_clustering.candidates[i].origin == Clustering_candidate::GRID_SEGMENTS &&
+         std::find(ranked.begin(), ranked.end(), i) == ranked.end())
+      {
+        ranked.push_back(i);
+        --extra;
+      }
+    return ranked;
+  }
+
+  // Runs f with the parallelism of ConcurrencyTag: the steps that compute.
+  template <typename F>
+  static void with_concurrency(const F& f)
+  {
+    internal::run_with_concurrency<ConcurrencyTag>(f);
+  }
+
   // The parameters every step shares: the object's maps and indices, and the
-  // orientation policy of the clustering, so that edits, solves and
-  // measurements match instances to S-quads as it did.
+  // orientation policy and similarity threshold of the clustering, so that
+  // edits, solves and measurements match instances to S-quads as it did.
   auto own_maps()
   {
     return parameters::vertex_point_map(m_vpm)
       .face_index_map(m_fim)
       .face_cluster_map(face_cluster_map())
       .face_orientation_map(face_orientation_map())
-      .orientation_policy(m_policy);
+      .orientation_policy(m_policy)
+      .similarity_threshold(m_similarity_threshold);
   }
 
   // The user's parameters with the object's maps in front (found first); the
@@ -641,15 +643,14 @@ private:
   PolygonMesh& m_mesh;
   VertexPointMap m_vpm;
   Face_index_map m_fim;
-  std::unique_ptr<const PolygonMesh> m_input;  // connectivity of the input
-  Vertex_index_map m_input_vim;
-  std::vector<Point> m_input_points;           // positions of the input
+  Vertex_index_map m_vim;
+  std::vector<Point> m_input_points;  // positions of the input, by m_vim
   std::vector<int> m_cluster;
   std::vector<int> m_orientation;
   std::size_t m_number_of_clusters = 0;
   bool m_is_clustered = false;
   Orientation_policy m_policy = PROPER_RIGID_MOTIONS;
-  double m_similarity_threshold = 0.01;
+  double m_similarity_threshold = defaults::similarity_threshold;
   Clustering_result m_clustering;
   Optimization_result m_optimization;
 };

@@ -46,10 +46,7 @@ struct Editable_clustering
                                        get_const_property_map(CGAL::vertex_point, pm)))
   {
     namespace TS_np = CGAL::Tilable_surfaces::internal_np;
-    static_assert(!parameters::is_default_parameter<NP, TS_np::face_cluster_t>::value,
-                  "the named parameter face_cluster_map is required");
-    static_assert(!parameters::is_default_parameter<NP, TS_np::face_orientation_t>::value,
-                  "the named parameter face_orientation_map is required");
+    require_face_maps<NP>();
     const auto cluster_map = parameters::get_parameter(np, TS_np::face_cluster);
     const auto orientation_map = parameters::get_parameter(np, TS_np::face_orientation);
     validate_quad_mesh(pm, np);
@@ -103,7 +100,7 @@ Orientation_policy orientation_policy(const NP& np)
 {
   return parameters::choose_parameter(
     parameters::get_parameter(np, CGAL::Tilable_surfaces::internal_np::orientation_policy),
-    PROPER_RIGID_MOTIONS);
+    defaults::orientation_policy);
 }
 
 } // namespace internal
@@ -222,7 +219,8 @@ std::size_t retag_orientations(const PolygonMesh& pm, const CGAL_NP_CLASS& np)
   internal::Editable_clustering<PolygonMesh, CGAL_NP_CLASS> e(pm, np);
   const Orientation_policy policy = internal::orientation_policy(np);
   const double tau = parameters::choose_parameter(
-    parameters::get_parameter(np, CGAL::Tilable_surfaces::internal_np::similarity_threshold), 0.01);
+    parameters::get_parameter(np, CGAL::Tilable_surfaces::internal_np::similarity_threshold),
+    defaults::similarity_threshold);
   const internal::Cluster_shapes shapes = internal::cluster_shapes(e.quads, e.label, e.k, policy);
   e.orientation = internal::flexible_orientations(pm, e.fim, e.quads, e.label, shapes.s_quads,
                                                   shapes.orientation, policy,

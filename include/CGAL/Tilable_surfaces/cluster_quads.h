@@ -5,14 +5,16 @@
 #define CGAL_TILABLE_SURFACES_CLUSTER_QUADS_H
 
 /// \file cluster_quads.h
-/// Clustering of the quads of a mesh into K S-quads (paper §3 and §5,
-/// method notes §2).
+/// Clustering of the quads of a mesh into K S-quads (paper §3 and §5; user
+/// manual, section Clustering).
 
 #include <CGAL/Tilable_surfaces/Edge_sharing_graph.h>
+#include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/exceptions.h>
 #include <CGAL/Tilable_surfaces/named_parameters.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 #include <CGAL/Tilable_surfaces/validation.h>
+#include <CGAL/Tilable_surfaces/visitor.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/beam_search.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/cluster_analysis.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/descriptor_index.h>
@@ -24,6 +26,7 @@
 #include <CGAL/Tilable_surfaces/internal/Clustering/strip_candidates.h>
 
 #include <CGAL/Random.h>
+#include <CGAL/Real_timer.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <boost/graph/graph_traits.hpp>
@@ -31,28 +34,15 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <iostream>
+#include <memory>
 #include <string>
 #include <type_traits>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
 namespace Tilable_surfaces {
 
-/// \ingroup PkgTilableSurfacesRef
-/// How `cluster_quads()` evaluates the weights of clusters.
-enum Clustering_path
-{
-  /// `EXACT_PATH` for meshes with at most `exact_clustering_limit` faces,
-  /// `DESCRIPTOR_PATH` above.
-  AUTOMATIC_PATH = 0,
-  /// The paper's method: the n x n affinity matrix of dissimilarities;
-  /// O(n^2) time and memory, exact weights.
-  EXACT_PATH,
-  /// Scalable: dissimilarities only between quads whose descriptors are
-  /// close (kd-tree), merge costs from descriptor statistics; linear memory.
-  DESCRIPTOR_PATH
-};
 
 /// \ingroup PkgTilableSurfacesRef
 /// One configuration of the final candidate pool of `cluster_quads()`.
@@ -156,6 +146,305 @@ Cluster_shapes finished_clustering(const PolygonMesh& pm, FaceIndexMap fim, Vert
   return shapes;
 }
 
+// What cluster_quads() reads from its named parameters, besides K and the maps.
+struct Clustering_settings
+{
+  std::size_t width;          // number_of_candidates
+  double relative_threshold;  // similarity_threshold
+  double lambda, mu;          // flexibility_penalty, structure_penalty
+  bool use_kmeans, auto_merge, use_strips, use_segments;
+  Clustering_path path;
+  std::size_t exact_limit;
+  Orientation_policy policy;
+  unsigned int seed;
+};
+
+template <typename NP>
+Clustering_settings clustering_settings(const NP& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  namespace TS_np = CGAL::Tilable_surfaces::internal_np;
+  Clustering_settings s;
+  s.width = choose_parameter(get_parameter(np, TS_np::number_of_candidates), defaults::number_of_candidates);
+  s.relative_threshold =
+    choose_parameter(get_parameter(np, TS_np::similarity_threshold), defaults::similarity_threshold);
+  s.lambda = choose_parameter(get_parameter(np, TS_np::flexibility_penalty), defaults::flexibility_penalty);
+  s.mu = choose_parameter(get_parameter(np, TS_np::structure_penalty), defaults::structure_penalty);
+  s.use_kmeans = choose_parameter(get_parameter(np, TS_np::use_kmeans_candidate), true);
+  s.auto_merge = choose_parameter(get_parameter(np, TS_np::use_auto_merge), true);
+  s.use_strips = choose_parameter(get_parameter(np, TS_np::use_strip_candidates), true);
+  s.use_segments = choose_parameter(get_parameter(np, TS_np::use_segment_candidates), true);
+  s.path = choose_parameter(get_parameter(np, TS_np::clustering_path), defaults::clustering_path);
+  s.exact_limit =
+    choose_parameter(get_parameter(np, TS_np::exact_clustering_limit), defaults::exact_clustering_limit);
+  s.policy = choose_parameter(get_parameter(np, TS_np::orientation_policy), defaults::orientation_policy);
+  s.seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), defaults::random_seed);
+  return s;
+}
+
+// The stages of cluster_quads() on a checked mesh, in their order (the
+// random draws of the splits, the k-means and the strips come in that order):
+// threshold clustering, beam of merges, the other candidates, the choice, the
+// S-quads and orientations of the chosen one.
+template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
+class Quad_clusterer
+{
+public:
+  Quad_clusterer(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, std::vector<Quad> quads,
+                 double mean_edge_length, std::size_t k, const Clustering_settings& settings)
+    : m_pm(pm), m_fim(fim), m_vpm(vpm), m_quads(std::move(quads)), m_n(m_quads.size()), m_k(k)
+    , m_length(mean_edge_length), m_settings(settings), m_random(settings.seed)
+  {
+    m_descriptors.resize(m_n);
+    for(std::size_t f = 0; f < m_n; ++f) m_descriptors[f] = shape_descriptor(m_quads[f]);
+  }
+
+  // Fills `result`; returns the S-quads and orientations of the chosen
+  // candidate. `visitor.phase()` follows the stages.
+  template <typename Visitor>
+  Cluster_shapes run(Clustering_result& result, Visitor& visitor)
+  {
+    CGAL::Real_timer timer;
+    timer.start();
+    result.path = m_settings.path != AUTOMATIC_PATH ? m_settings.path
+                : (m_n <= m_settings.exact_limit ? EXACT_PATH : DESCRIPTOR_PATH);
+    m_exact = (result.path == EXACT_PATH);
+    result.weights_are_exact = m_exact;
+    if(m_exact)
+      compute_affinity();
+    threshold_clustering(result);
+    score_initial_clustering();
+    visitor.phase("threshold clustering", timer.time());
+    timer.reset();
+    add_hierarchical_candidates(result);
+    visitor.phase("merges", timer.time());
+    timer.reset();
+    if(m_settings.use_kmeans && m_k > 1)
+      add_kmeans_candidate(result);
+    if(m_settings.use_strips && m_k > 1)
+      for(const std::vector<std::size_t>& label : strip_clusterings(m_pm, m_fim, m_vpm, m_quads, m_descriptors,
+                                                                    m_k, m_settings.policy, m_random))
+        add_best_match_candidate(result, label, Clustering_candidate::QUAD_STRIPS);
+    if(m_settings.use_segments && m_k > 1)
+      for(const std::vector<std::size_t>& label : segment_clusterings(m_pm, m_fim, m_vpm, m_k, m_settings.policy))
+        add_best_match_candidate(result, label, Clustering_candidate::GRID_SEGMENTS);
+    choose(result);
+    visitor.phase("other candidates", timer.time());
+    timer.reset();
+    Cluster_shapes shapes = finish(result);
+    visitor.phase("orientations", timer.time());
+    return shapes;
+  }
+
+private:
+  void compute_affinity()
+  {
+    m_affinity.assign(m_n * m_n, 0.0);
+    parallel_for(m_n, [&](std::size_t p) {
+      for(std::size_t q = p + 1; q < m_n; ++q)
+        m_affinity[p * m_n + q] = fast_best_match(m_quads[p], m_quads[q], m_settings.policy).dissimilarity;
+    });
+    for(std::size_t p = 0; p < m_n; ++p)
+      for(std::size_t q = p + 1; q < m_n; ++q)
+        m_affinity[q * m_n + p] = m_affinity[p * m_n + q];
+  }
+
+  // 1. Threshold clustering, split up to K clusters if it has fewer.
+  void threshold_clustering(Clustering_result& result)
+  {
+    const Descriptor_index index(m_descriptors);
+    const Orientation_policy policy = m_settings.policy;
+    double tau = m_settings.relative_threshold * m_length;
+    const std::size_t max_initial = m_exact ? m_n : (std::max)(std::size_t(1000), 4 * m_k);
+    while(!leader_clustering(m_quads, m_descriptors, index, tau, policy, max_initial, m_init))
+      tau = tau > 0 ? 2 * tau : 1e-3 * m_length;
+    // Too few clusters: a finer threshold first (symmetric meshes have groups of
+    // congruent quads that no threshold separates; splits handle those).
+    while(m_init.leaders.size() < m_k && tau > 1e-9 * m_length)
+    {
+      tau /= 4;
+      leader_clustering(m_quads, m_descriptors, index, tau, policy, m_n, m_init);
+    }
+    result.initial_threshold = tau;
+    result.number_of_initial_clusters = m_init.leaders.size();
+    split_to(m_k, m_quads, m_descriptors, policy, m_random, m_init);
+  }
+
+  // The score's references: the single cluster's weight and the DOF of the
+  // threshold clustering.
+  void score_initial_clustering()
+  {
+    m_initial_graph.reset(new Edge_sharing_graph<PolygonMesh>(
+      edge_sharing_graph(m_pm, m_fim, m_vpm, m_init.cluster, m_init.orientation, m_init.leaders.size())));
+    m_score.single_cluster_weight = labelling_weight(std::vector<std::size_t>(m_n, 0), 1);
+    m_score.flexibility_penalty = m_settings.lambda;
+    m_score.initial_dof = m_initial_graph->degree_of_flexibility();
+    m_score.structure_penalty = m_settings.mu;
+    m_score.total_length_deviation = total_length_deviation(m_pm, m_vpm);
+  }
+
+  // The weight of a whole labelling, in the units of the path.
+  double labelling_weight(const std::vector<std::size_t>& label, std::size_t k) const
+  {
+    double w = 0;
+    if(m_exact)
+    {
+      for(std::size_t p = 0; p < m_n; ++p)
+        for(std::size_t q = p + 1; q < m_n; ++q)
+          if(label[p] == label[q]) w += m_affinity[p * m_n + q];
+      return w;
+    }
+    const Descriptor_merge_costs stats(m_descriptors, label, k);
+    for(std::size_t c = 0; c < k; ++c) w += stats.initial_group(c).weight;
+    return w;
+  }
+
+  // 2. The last beam of binary merges.
+  void add_hierarchical_candidates(Clustering_result& result)
+  {
+    const std::size_t big_n = m_init.leaders.size();
+    std::vector<std::size_t> faces_per_cluster(big_n, 0);
+    for(std::size_t c : m_init.cluster) ++faces_per_cluster[c];
+    std::vector<Quad> leaders(big_n);
+    for(std::size_t c = 0; c < big_n; ++c) leaders[c] = m_quads[m_init.leaders[c]];
+    auto collect = [&](const auto& beam_search) {
+      for(const auto& s : beam_search.run(beam_search.initial_state(*m_initial_graph, faces_per_cluster), m_k))
+      {
+        std::vector<std::size_t> group_of(big_n);
+        for(std::size_t g = 0; g < s.members.size(); ++g)
+          for(std::size_t c : s.members[g]) group_of[c] = g;
+        std::vector<std::size_t> label(m_n);
+        for(std::size_t f = 0; f < m_n; ++f) label[f] = group_of[m_init.cluster[f]];
+        relabel_by_first_face(label);
+        add_candidate(result, label, Clustering_candidate::HIERARCHICAL, s.weight, s.graph);
+      }
+    };
+    if(m_exact)
+      collect(Beam_search<PolygonMesh, Exact_merge_costs>(Exact_merge_costs(m_affinity, m_init.cluster, big_n),
+                                                          leaders, m_settings.policy, m_score, m_settings.width,
+                                                          m_settings.auto_merge));
+    else
+      collect(Beam_search<PolygonMesh, Descriptor_merge_costs>(
+        Descriptor_merge_costs(m_descriptors, m_init.cluster, big_n), leaders, m_settings.policy, m_score,
+        m_settings.width, m_settings.auto_merge));
+  }
+
+  // 3. The k-means configuration, oriented on the face nearest to each centre.
+  void add_kmeans_candidate(Clustering_result& result)
+  {
+    std::vector<std::size_t> all(m_n);
+    for(std::size_t f = 0; f < m_n; ++f) all[f] = f;
+    std::vector<std::size_t> label = kmeans(m_descriptors, all, m_k, m_random);
+    if(label.empty())
+      return;
+    relabel_by_first_face(label);
+    const Descriptor_merge_costs stats(m_descriptors, label, m_k);
+    std::vector<std::size_t> representative(m_k, no_index());
+    std::vector<double> best(m_k, 0.0);
+    for(std::size_t f = 0; f < m_n; ++f)
+    {
+      Quad_descriptor centre = stats.initial_group(label[f]).mean;
+      const double d = squared_distance(m_descriptors[f], centre);
+      if(representative[label[f]] == no_index() || d < best[label[f]])
+      {
+        representative[label[f]] = f;
+        best[label[f]] = d;
+      }
+    }
+    std::vector<Quad_orientation> orientation(m_n);
+    parallel_for(m_n, [&](std::size_t f) {
+      orientation[f] = fast_best_match(m_quads[representative[label[f]]], m_quads[f], m_settings.policy).orientation;
+    });
+    add_candidate(result, label, Clustering_candidate::KMEANS, labelling_weight(label, m_k),
+                  edge_sharing_graph(m_pm, m_fim, m_vpm, label, orientation, m_k));
+  }
+
+  // 3b. A clustering that follows the quad strips or the segments of a quad
+  // grid, each face oriented by its best match.
+  void add_best_match_candidate(Clustering_result& result, const std::vector<std::size_t>& label,
+                                Clustering_candidate::Origin origin)
+  {
+    const Cluster_shapes shapes = cluster_shapes(m_quads, label, m_k, m_settings.policy);
+    const Edge_sharing_graph<PolygonMesh> graph = edge_sharing_graph(m_pm, m_fim, m_vpm, label, shapes.orientation, m_k);
+    add_candidate(result, label, origin, labelling_weight(label, m_k), graph);
+  }
+
+  void add_candidate(Clustering_result& result, const std::vector<std::size_t>& label,
+                     Clustering_candidate::Origin origin, double weight, const Edge_sharing_graph<PolygonMesh>& graph)
+  {
+    Clustering_candidate cand;
+    cand.origin = origin;
+    cand.face_cluster = label;
+    cand.weight = weight;
+    cand.degree_of_flexibility = graph.degree_of_flexibility();
+    cand.length_deviation = graph.length_deviation();
+    cand.score = m_score(cand.weight, cand.degree_of_flexibility, cand.length_deviation);
+    result.candidates.push_back(cand);
+  }
+
+  // 4. The lowest score wins (the first on a tie).
+  void choose(Clustering_result& result) const
+  {
+    for(std::size_t i = 1; i < result.candidates.size(); ++i)
+      if(result.candidates[i].score < result.candidates[result.chosen_candidate].score)
+        result.chosen_candidate = i;
+    const Clustering_candidate& chosen = result.candidates[result.chosen_candidate];
+    const std::size_t d0 = m_score.initial_dof;
+    result.choice_reason =
+      std::string(chosen.origin == Clustering_candidate::KMEANS ? "k-means"
+                  : chosen.origin == Clustering_candidate::QUAD_STRIPS ? "quad-strip"
+                  : chosen.origin == Clustering_candidate::GRID_SEGMENTS ? "grid-segment" : "hierarchical") +
+      " configuration with the lowest score " + std::to_string(chosen.score) + " = weight " +
+      std::to_string(chosen.weight) + " / " + std::to_string(m_score.single_cluster_weight) + " + " +
+      std::to_string(m_settings.lambda) + " x (" + std::to_string(d0) + " - DOF " +
+      std::to_string(chosen.degree_of_flexibility) + ") / " + std::to_string(d0) + ", among " +
+      std::to_string(result.candidates.size()) + " candidates";
+  }
+
+  // 5. S-quads, orientations, weights and DOF of the chosen configuration.
+  Cluster_shapes finish(Clustering_result& result) const
+  {
+    const std::vector<std::size_t>& label = result.candidates[result.chosen_candidate].face_cluster;
+    Cluster_shapes shapes = finished_clustering(m_pm, m_fim, m_vpm, m_quads, label, m_k, m_settings.policy,
+                                                m_settings.relative_threshold * m_length);
+    result.s_quads = shapes.s_quads;
+    result.degree_of_flexibility = shapes.degree_of_flexibility;
+    result.cluster_sizes.assign(m_k, 0);
+    result.cluster_weights.assign(m_k, 0.0);
+    for(std::size_t f = 0; f < m_n; ++f) ++result.cluster_sizes[label[f]];
+    if(m_exact)
+    {
+      for(std::size_t p = 0; p < m_n; ++p)
+        for(std::size_t q = p + 1; q < m_n; ++q)
+          if(label[p] == label[q]) result.cluster_weights[label[p]] += m_affinity[p * m_n + q];
+    }
+    else
+    {
+      for(std::size_t f = 0; f < m_n; ++f) result.cluster_weights[label[f]] += shapes.distance[f];
+      for(std::size_t c = 0; c < m_k; ++c)
+        result.cluster_weights[c] *= double(result.cluster_sizes[c] - 1);
+    }
+    for(double w : result.cluster_weights) result.total_weight += w;
+    return shapes;
+  }
+
+  const PolygonMesh& m_pm;
+  FaceIndexMap m_fim;
+  VertexPointMap m_vpm;
+  const std::vector<Quad> m_quads;
+  std::vector<Quad_descriptor> m_descriptors;
+  const std::size_t m_n, m_k;
+  const double m_length;
+  const Clustering_settings m_settings;
+  CGAL::Random m_random;
+  bool m_exact = true;
+  std::vector<double> m_affinity;  // n x n dissimilarities, exact path only
+  Initial_clustering m_init;
+  std::unique_ptr<Edge_sharing_graph<PolygonMesh> > m_initial_graph;
+  Configuration_score m_score;
+};
+
 } // namespace internal
 
 /// \ingroup PkgTilableSurfacesRef
@@ -244,7 +533,8 @@ Cluster_shapes finished_clustering(const PolygonMesh& pm, FaceIndexMap fim, Vert
 ///   \cgalParamNBegin{random_seed} seed of the k-means and of splits; default 0. \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_point_map} the points of the vertices. \cgalParamNEnd
 ///   \cgalParamNBegin{face_index_map} indices 0..n-1 of the faces. \cgalParamNEnd
-///   \cgalParamNBegin{verbose} progress on `std::cerr`; default `false`. \cgalParamNEnd
+///   \cgalParamNBegin{visitor} a `Default_visitor`, whose `phase()` follows the
+///     stages. \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
 /// \throws Invalid_input if K < 1, K > num_faces(pm), or `pm` fails
@@ -259,33 +549,14 @@ Clustering_result cluster_quads(const PolygonMesh& pm, const CGAL_NP_CLASS& np)
 
   static_assert(!is_default_parameter<CGAL_NP_CLASS, TS_np::number_of_tiles_t>::value,
                 "cluster_quads(): the named parameter number_of_tiles is required");
-  static_assert(!is_default_parameter<CGAL_NP_CLASS, TS_np::face_cluster_t>::value,
-                "cluster_quads(): the named parameter face_cluster_map is required");
-  static_assert(!is_default_parameter<CGAL_NP_CLASS, TS_np::face_orientation_t>::value,
-                "cluster_quads(): the named parameter face_orientation_map is required");
+  internal::require_face_maps<CGAL_NP_CLASS>();
 
   const long long requested_k = static_cast<long long>(get_parameter(np, TS_np::number_of_tiles));
   const auto cluster_map = get_parameter(np, TS_np::face_cluster);
   const auto orientation_map = get_parameter(np, TS_np::face_orientation);
   typedef typename boost::property_traits<
     typename std::remove_const<decltype(cluster_map)>::type>::value_type Cluster_id;
-  const std::size_t width = choose_parameter(get_parameter(np, TS_np::number_of_candidates), 10);
-  const double relative_threshold =
-    choose_parameter(get_parameter(np, TS_np::similarity_threshold), 0.01);
-  const double lambda = choose_parameter(get_parameter(np, TS_np::flexibility_penalty), 0.5);
-  const double mu = choose_parameter(get_parameter(np, TS_np::structure_penalty), 1.0);
-  const bool use_kmeans = choose_parameter(get_parameter(np, TS_np::use_kmeans_candidate), true);
-  const bool auto_merge = choose_parameter(get_parameter(np, TS_np::use_auto_merge), true);
-  const bool use_strips = choose_parameter(get_parameter(np, TS_np::use_strip_candidates), true);
-  const bool use_segments = choose_parameter(get_parameter(np, TS_np::use_segment_candidates), true);
-  const Clustering_path requested_path =
-    choose_parameter(get_parameter(np, TS_np::clustering_path), AUTOMATIC_PATH);
-  const std::size_t exact_limit =
-    choose_parameter(get_parameter(np, TS_np::exact_clustering_limit), 1500);
-  const Orientation_policy policy =
-    choose_parameter(get_parameter(np, TS_np::orientation_policy), PROPER_RIGID_MOTIONS);
-  const unsigned int seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), 0u);
-  const bool verbose = choose_parameter(get_parameter(np, CGAL::internal_np::verbose), false);
+  const internal::Clustering_settings settings = internal::clustering_settings(np);
 
   if(requested_k < 1)
     throw Invalid_input("number_of_tiles is " + std::to_string(requested_k) +
@@ -298,232 +569,21 @@ Clustering_result cluster_quads(const PolygonMesh& pm, const CGAL_NP_CLASS& np)
                         std::to_string(n) + " faces of the mesh", Invalid_input::PARAMETER);
 
   const auto fim = CGAL::get_initialized_face_index_map(pm, np);
-  const std::vector<Quad> quads = internal::face_quads(pm, fim, np);
-  std::vector<Quad_descriptor> descriptors(n);
-  for(std::size_t f = 0; f < n; ++f) descriptors[f] = shape_descriptor(quads[f]);
-  const double length = mean_edge_length(pm, np);
-  CGAL::Random random(seed);
-
-  Clustering_result result;
-  result.path = requested_path != AUTOMATIC_PATH ? requested_path
-              : (n <= exact_limit ? EXACT_PATH : DESCRIPTOR_PATH);
-  const bool exact = (result.path == EXACT_PATH);
-  result.weights_are_exact = exact;
-
-  // Affinity matrix (exact path only).
-  std::vector<double> affinity;
-  if(exact)
-  {
-    affinity.assign(n * n, 0.0);
-    internal::parallel_for(n, [&](std::size_t p) {
-      for(std::size_t q = p + 1; q < n; ++q)
-        affinity[p * n + q] = internal::fast_best_match(quads[p], quads[q], policy).dissimilarity;
-    });
-    for(std::size_t p = 0; p < n; ++p)
-      for(std::size_t q = p + 1; q < n; ++q)
-        affinity[q * n + p] = affinity[p * n + q];
-  }
-
-  // 1. Threshold clustering.
-  const internal::Descriptor_index index(descriptors);
-  internal::Initial_clustering init;
-  double tau = relative_threshold * length;
-  const std::size_t max_initial = exact ? n : (std::max)(std::size_t(1000), 4 * k);
-  while(!internal::leader_clustering(quads, descriptors, index, tau, policy, max_initial, init))
-    tau = tau > 0 ? 2 * tau : 1e-3 * length;
-  // Too few clusters: a finer threshold first (symmetric meshes have groups of
-  // congruent quads that no threshold separates; splits handle those).
-  while(init.leaders.size() < k && tau > 1e-9 * length)
-  {
-    tau /= 4;
-    internal::leader_clustering(quads, descriptors, index, tau, policy, n, init);
-  }
-  result.initial_threshold = tau;
-  result.number_of_initial_clusters = init.leaders.size();
-  internal::split_to(k, quads, descriptors, policy, random, init);
-  const std::size_t big_n = init.leaders.size();
-  if(verbose)
-    std::cerr << "cluster_quads: " << n << " faces, " << (exact ? "exact" : "descriptor")
-              << " path, " << result.number_of_initial_clusters << " initial clusters (tau = "
-              << tau << ")" << std::endl;
-
-  std::vector<std::size_t> faces_per_cluster(big_n, 0);
-  for(std::size_t c : init.cluster) ++faces_per_cluster[c];
-  std::vector<Quad> leaders(big_n);
-  for(std::size_t c = 0; c < big_n; ++c) leaders[c] = quads[init.leaders[c]];
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_const_property_map(CGAL::vertex_point, pm));
-  const Edge_sharing_graph<PolygonMesh> initial_graph =
-    internal::edge_sharing_graph(pm, fim, vpm, init.cluster, init.orientation, big_n);
-  const std::size_t d0 = initial_graph.degree_of_flexibility();
+  internal::Quad_clusterer<PolygonMesh, decltype(fim), decltype(vpm)> clusterer(
+    pm, fim, vpm, internal::face_quads(pm, fim, np), mean_edge_length(pm, np), k, settings);
+  Clustering_result result;
+  auto&& visitor = internal::visitor_of(np);
+  const internal::Cluster_shapes shapes = clusterer.run(result, visitor);
 
-  // Weights of whole labellings, in the units of the path.
-  // (The final pool's labellings are kept in the candidates.)
-  auto labelling_weight = [&](const std::vector<std::size_t>& label, std::size_t kk) {
-    double w = 0;
-    if(exact)
-    {
-      for(std::size_t p = 0; p < n; ++p)
-        for(std::size_t q = p + 1; q < n; ++q)
-          if(label[p] == label[q]) w += affinity[p * n + q];
-      return w;
-    }
-    const internal::Descriptor_merge_costs stats(descriptors, label, kk);
-    for(std::size_t c = 0; c < kk; ++c) w += stats.initial_group(c).weight;
-    return w;
-  };
-  internal::Configuration_score score;
-  score.single_cluster_weight = labelling_weight(std::vector<std::size_t>(n, 0), 1);
-  score.flexibility_penalty = lambda;
-  score.initial_dof = d0;
-  score.structure_penalty = mu;
-  score.total_length_deviation = internal::total_length_deviation(pm, vpm);
-  const double w1 = score.single_cluster_weight;
-
-  // 2. Beam of merges.
-  auto collect = [&](const auto& beam_search, const auto& initial_state) {
-    for(const auto& s : beam_search.run(initial_state, k))
-    {
-      std::vector<std::size_t> group_of(big_n);
-      for(std::size_t g = 0; g < s.members.size(); ++g)
-        for(std::size_t c : s.members[g]) group_of[c] = g;
-      std::vector<std::size_t> label(n);
-      for(std::size_t f = 0; f < n; ++f) label[f] = group_of[init.cluster[f]];
-      internal::relabel_by_first_face(label);
-      Clustering_candidate cand;
-      cand.face_cluster = label;
-      cand.weight = s.weight;
-      cand.degree_of_flexibility = s.graph.degree_of_flexibility();
-      cand.length_deviation = s.graph.length_deviation();
-      cand.score = score(s.weight, cand.degree_of_flexibility, cand.length_deviation);
-      result.candidates.push_back(cand);
-    }
-  };
-  if(exact)
-  {
-    const internal::Exact_merge_costs costs(affinity, init.cluster, big_n);
-    const internal::Beam_search<PolygonMesh, internal::Exact_merge_costs> beam(
-      costs, leaders, policy, score, width, auto_merge, verbose);
-    collect(beam, beam.initial_state(initial_graph, faces_per_cluster));
-  }
-  else
-  {
-    const internal::Descriptor_merge_costs costs(descriptors, init.cluster, big_n);
-    const internal::Beam_search<PolygonMesh, internal::Descriptor_merge_costs> beam(
-      costs, leaders, policy, score, width, auto_merge, verbose);
-    collect(beam, beam.initial_state(initial_graph, faces_per_cluster));
-  }
-
-  // 3. The k-means configuration, oriented on the face nearest to each centre.
-  if(use_kmeans && k > 1)
-  {
-    std::vector<std::size_t> all(n);
-    for(std::size_t f = 0; f < n; ++f) all[f] = f;
-    std::vector<std::size_t> label = internal::kmeans(descriptors, all, k, random);
-    if(!label.empty())
-    {
-      internal::relabel_by_first_face(label);
-      const internal::Descriptor_merge_costs stats(descriptors, label, k);
-      std::vector<std::size_t> representative(k, internal::no_index());
-      std::vector<double> best(k, 0.0);
-      for(std::size_t f = 0; f < n; ++f)
-      {
-        Quad_descriptor centre = stats.initial_group(label[f]).mean;
-        const double d = internal::squared_distance(descriptors[f], centre);
-        if(representative[label[f]] == internal::no_index() || d < best[label[f]])
-        {
-          representative[label[f]] = f;
-          best[label[f]] = d;
-        }
-      }
-      std::vector<Quad_orientation> orientation(n);
-      internal::parallel_for(n, [&](std::size_t f) {
-        orientation[f] =
-          internal::fast_best_match(quads[representative[label[f]]], quads[f], policy).orientation;
-      });
-      Clustering_candidate cand;
-      cand.origin = Clustering_candidate::KMEANS;
-      cand.weight = labelling_weight(label, k);
-      const Edge_sharing_graph<PolygonMesh> graph =
-        internal::edge_sharing_graph(pm, fim, vpm, label, orientation, k);
-      cand.degree_of_flexibility = graph.degree_of_flexibility();
-      cand.length_deviation = graph.length_deviation();
-      cand.score = score(cand.weight, cand.degree_of_flexibility, cand.length_deviation);
-      cand.face_cluster = label;
-      result.candidates.push_back(cand);
-    }
-  }
-
-  // 3b. Clusterings that follow the quad strips, and segment clusterings of
-  // quad grids, oriented by best match.
-  auto add_candidate = [&](const std::vector<std::size_t>& label, Clustering_candidate::Origin origin) {
-    const internal::Cluster_shapes shapes = internal::cluster_shapes(quads, label, k, policy);
-    const Edge_sharing_graph<PolygonMesh> graph =
-      internal::edge_sharing_graph(pm, fim, vpm, label, shapes.orientation, k);
-    Clustering_candidate cand;
-    cand.origin = origin;
-    cand.weight = labelling_weight(label, k);
-    cand.degree_of_flexibility = graph.degree_of_flexibility();
-    cand.length_deviation = graph.length_deviation();
-    cand.score = score(cand.weight, cand.degree_of_flexibility, cand.length_deviation);
-    cand.face_cluster = label;
-    result.candidates.push_back(cand);
-  };
-  if(use_strips && k > 1)
-    for(const std::vector<std::size_t>& label :
-          internal::strip_clusterings(pm, fim, vpm, quads, descriptors, k, policy, random))
-      add_candidate(label, Clustering_candidate::QUAD_STRIPS);
-  if(use_segments && k > 1)
-    for(const std::vector<std::size_t>& label : internal::segment_clusterings(pm, fim, vpm, k, policy))
-      add_candidate(label, Clustering_candidate::GRID_SEGMENTS);
-
-  // 4. The lowest score wins.
-  for(std::size_t i = 1; i < result.candidates.size(); ++i)
-    if(result.candidates[i].score < result.candidates[result.chosen_candidate].score)
-      result.chosen_candidate = i;
-  const Clustering_candidate& chosen = result.candidates[result.chosen_candidate];
-  result.choice_reason =
-    std::string(chosen.origin == Clustering_candidate::KMEANS ? "k-means"
-                : chosen.origin == Clustering_candidate::QUAD_STRIPS ? "quad-strip"
-                : chosen.origin == Clustering_candidate::GRID_SEGMENTS ? "grid-segment" : "hierarchical") +
-    " configuration with the lowest score " + std::to_string(chosen.score) + " = weight " +
-    std::to_string(chosen.weight) + " / " + std::to_string(w1) + " + " + std::to_string(lambda) +
-    " x (" + std::to_string(d0) + " - DOF " + std::to_string(chosen.degree_of_flexibility) +
-    ") / " + std::to_string(d0) + ", among " + std::to_string(result.candidates.size()) +
-    " candidates";
-
-  // 5. S-quads, orientations, weights, degree of flexibility.
-  const std::vector<std::size_t>& label = chosen.face_cluster;
-  internal::Cluster_shapes shapes =
-    internal::finished_clustering(pm, fim, vpm, quads, label, k, policy, relative_threshold * length);
-  result.s_quads = shapes.s_quads;
-  result.degree_of_flexibility = shapes.degree_of_flexibility;
-  result.cluster_sizes.assign(k, 0);
-  result.cluster_weights.assign(k, 0.0);
-  for(std::size_t f = 0; f < n; ++f) ++result.cluster_sizes[label[f]];
-  if(exact)
-  {
-    for(std::size_t p = 0; p < n; ++p)
-      for(std::size_t q = p + 1; q < n; ++q)
-        if(label[p] == label[q]) result.cluster_weights[label[p]] += affinity[p * n + q];
-  }
-  else
-  {
-    for(std::size_t f = 0; f < n; ++f) result.cluster_weights[label[f]] += shapes.distance[f];
-    for(std::size_t c = 0; c < k; ++c)
-      result.cluster_weights[c] *= double(result.cluster_sizes[c] - 1);
-  }
-  for(double w : result.cluster_weights) result.total_weight += w;
-
+  const std::vector<std::size_t>& label = result.candidates[result.chosen_candidate].face_cluster;
   for(auto f : faces(pm))
   {
     const std::size_t i = get(fim, f);
     put(cluster_map, f, Cluster_id(label[i]));
     internal::put_orientation(orientation_map, f, shapes.orientation[i]);
   }
-  if(verbose)
-    std::cerr << "cluster_quads: " << result.choice_reason << "; DOF "
-              << result.degree_of_flexibility << std::endl;
   return result;
 }
 

@@ -31,16 +31,18 @@ namespace Tilable_surfaces {
 ///     `number_of_tiles`, `max_deviation` and the output maps. \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
+/// \tparam ConcurrencyTag as for `make_k_set_tilable()`.
+///
 /// \throws Invalid_input if `pm` is not a valid quad mesh, or a K is 0 or
 /// more than the number of faces; `pm` is untouched then.
-template <class PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
+template <typename ConcurrencyTag = CGAL::Sequential_tag, class PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 std::vector<Tile_count_trial> k_set_tilable_curve(PolygonMesh& pm, const std::vector<std::size_t>& tile_counts,
                                                   const CGAL_NP_CLASS& np = parameters::default_values())
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
   typedef typename CGAL::GetVertexPointMap<PolygonMesh, CGAL_NP_CLASS>::type Vertex_point_map;
-  auto visitor = internal::visitor_of(np);
+  auto&& visitor = internal::visitor_of(np);
 
   for(std::size_t k : tile_counts)
     if(k < 1 || k > num_faces(pm))
@@ -48,7 +50,7 @@ std::vector<Tile_count_trial> k_set_tilable_curve(PolygonMesh& pm, const std::ve
                           std::to_string(num_faces(pm)) + " faces", Invalid_input::PARAMETER);
   const Vertex_point_map vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                                 get_property_map(CGAL::vertex_point, pm));
-  K_set_tilable_surface<PolygonMesh, Vertex_point_map> surface(pm, vpm);
+  K_set_tilable_surface<PolygonMesh, Vertex_point_map, ConcurrencyTag> surface(pm, vpm);
 
   std::vector<Tile_count_trial> trials;
   for(std::size_t k : tile_counts)

@@ -8,6 +8,7 @@
 /// The one-call function: validate, cluster, optimize, measure; at a given K,
 /// or at the smallest K within a deviation budget.
 
+#include <CGAL/Tilable_surfaces/K_set_tilable_result.h>
 #include <CGAL/Tilable_surfaces/K_set_tilable_surface.h>
 #include <CGAL/Tilable_surfaces/internal/Search/smallest_passing_tile_count.h>
 
@@ -21,47 +22,6 @@
 
 namespace CGAL {
 namespace Tilable_surfaces {
-
-/// \ingroup PkgTilableSurfacesRef
-/// One K tried by the deviation search of `make_k_set_tilable()` or by
-/// `k_set_tilable_curve()`: what the whole pipeline gave at that K.
-struct Tile_count_trial
-{
-  std::size_t number_of_tiles = 0;        ///< K
-  std::size_t degree_of_flexibility = 0;  ///< DOF of the result's clustering
-  double congruence_error = 0;            ///< of the result, relative to its mean edge length
-  /// Symmetric Hausdorff distance of the result to the input, relative to
-  /// the input's bounding-box diagonal.
-  double hausdorff_distance = 0;
-  double max_displacement = 0;            ///< largest vertex displacement, mesh units
-  double seconds = 0;                     ///< time of this K's clustering and optimization
-  bool is_tilable = false;                ///< congruence within `congruence_tolerance`
-  /// Whether this K is tilable within the deviation budget `max_deviation`.
-  bool meets(double max_deviation) const { return is_tilable && hausdorff_distance <= max_deviation; }
-};
-
-/// \ingroup PkgTilableSurfacesRef
-/// What `make_k_set_tilable()` did and measured.
-struct K_set_tilable_result
-{
-  /// The clustering (K, DOF, S-quads before optimization, candidates).
-  Clustering_result clustering;
-  /// The optimization; its `measure` is the measurement of the result
-  /// against the input (congruence, approximation, displacement, F̃ terms,
-  /// final S-quads).
-  Optimization_result optimization;
-  /// The tile catalog of the result (one S-quad per cluster, mesh units).
-  std::vector<IO::Tile> tiles;
-  /// With `max_deviation`: every K tried, in the order tried (empty when K
-  /// was given).
-  std::vector<Tile_count_trial> trials;
-  double validation_time = 0;  ///< seconds spent checking the input
-  double clustering_time = 0;  ///< seconds spent clustering
-  double total_time = 0;       ///< seconds in total
-  /// Whether every face fits its S-quad within `congruence_tolerance`, as
-  /// measured on the result (`optimization.converged`).
-  bool is_tilable() const { return optimization.converged; }
-};
 
 namespace internal {
 
@@ -84,20 +44,20 @@ void cluster_and_optimize(Surface& surface, const NamedParameters& np, Visitor& 
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
+  const auto stage_np = with_visitor(np, visitor);
   CGAL::Real_timer phase;
   phase.start();
-  result.clustering = surface.cluster(np);
+  result.clustering = surface.cluster(stage_np);
   result.clustering_time = phase.time();
-  notify_phase(visitor, "clustering", result.clustering_time, 0);
+  visitor.phase("clustering", result.clustering_time);
 
   const bool paper_method = choose_parameter(get_parameter(np, internal_np::solver),
-                                            CONSTRAINED_GAUSS_NEWTON) == PAPER_CONJUGATE_GRADIENT;
-  result.optimization = paper_method ? surface.optimize(np) : surface.optimize_closest(np);
+                                            defaults::solver) == PAPER_CONJUGATE_GRADIENT;
+  result.optimization = paper_method ? surface.optimize(stage_np) : surface.optimize_closest(stage_np);
   result.clustering = surface.clustering();
-  result.tiles = surface.tile_catalog(result.optimization.measure);
-  notify_phase(visitor, "optimization",
-               result.optimization.setup_time + result.optimization.solve_time +
-                 result.optimization.measure_time, 0);
+  result.tiles = tile_catalog(result.optimization.measure);
+  visitor.phase("optimization", result.optimization.setup_time + result.optimization.solve_time +
+                                  result.optimization.measure_time);
 }
 
 inline Tile_count_trial tile_count_trial(const K_set_tilable_result& r, double seconds)
@@ -212,34 +172,36 @@ K_set_tilable_result search_tile_count(PolygonMesh& pm, Surface& surface, Vertex
 ///   \cgalParamNBegin{face_cluster_map} optional output: cluster id 0..K-1 of
 ///     every face. \cgalParamNEnd
 ///   \cgalParamNBegin{face_orientation_map} optional output: orientation 0..7 of
-///     every face relative to its S-quad (method notes §1). \cgalParamNEnd
+///     every face relative to its S-quad (user manual, section Definitions). \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_point_map} the points of `pm`; moved. \cgalParamNEnd
-///   \cgalParamNBegin{visitor} a model of the visitor of
-///     `optimize_tilable_surface()`; if it also has a member
-///     `phase(const char* name, double seconds)`, that is called after each of
-///     the phases "validation", "clustering" and "optimization". \cgalParamNEnd
+///   \cgalParamNBegin{visitor} a `Default_visitor` (or a class with its
+///     interface), by value or as `std::ref`: every stage calls the same object. \cgalParamNEnd
 ///   \cgalParamNBegin{...} the parameters of `cluster_quads()` and
 ///     `optimize_tilable_surface()`. \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag` (default), `CGAL::Parallel_tag`
+///   or `CGAL::Parallel_if_available_tag`: whether the steps may use several
+///   threads (TBB), as in Polygon_mesh_processing. The result is the same.
+///
 /// \throws Invalid_input if `pm` or a parameter cannot be processed; `pm` and
 /// the maps are untouched then.
-template <class PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
+template <typename ConcurrencyTag = CGAL::Sequential_tag, class PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 K_set_tilable_result make_k_set_tilable(PolygonMesh& pm, const CGAL_NP_CLASS& np)
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
   typedef typename CGAL::GetVertexPointMap<PolygonMesh, CGAL_NP_CLASS>::type Vertex_point_map;
-  auto visitor = internal::visitor_of(np);
+  auto&& visitor = internal::visitor_of(np);
 
   K_set_tilable_result result;
   CGAL::Real_timer total;
   total.start();
   const Vertex_point_map surface_vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                                         get_property_map(CGAL::vertex_point, pm));
-  K_set_tilable_surface<PolygonMesh, Vertex_point_map> surface(pm, surface_vpm);
+  K_set_tilable_surface<PolygonMesh, Vertex_point_map, ConcurrencyTag> surface(pm, surface_vpm);
   const double validation_time = total.time();
-  internal::notify_phase(visitor, "validation", validation_time, 0);
+  visitor.phase("validation", validation_time);
 
   if constexpr(!parameters::is_default_parameter<CGAL_NP_CLASS, internal_np::max_deviation_t>::value)
   {

@@ -7,12 +7,12 @@
 /// \file measure.h
 /// How tilable a surface is and how far it is from the input: congruence by
 /// rigid fits, distance to the input surface by an AABB tree, the paper's
-/// normalized energy terms, and the S-quad templates (method notes §4, §6).
+/// normalized energy terms (its Table 1), and the S-quad templates.
 /// None of it reads a solver's own energy or bookkeeping.
 
 #include <CGAL/Tilable_surfaces/internal/Measure/approximation.h>
 #include <CGAL/Tilable_surfaces/internal/Measure/congruence.h>
-#include <CGAL/Tilable_surfaces/internal/Optimization/Tilable_problem.h>
+#include <CGAL/Tilable_surfaces/internal/Tilable_problem.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/energy_terms.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/fairness_operator.h>
 #include <CGAL/Tilable_surfaces/named_parameters.h>
@@ -34,7 +34,8 @@ struct Tilability_measure
   std::size_t number_of_clusters = 0;
   /// The degree of flexibility of the clustering (`Edge_sharing_graph`).
   std::size_t degree_of_flexibility = 0;
-  /// The congruence error (method notes §1): the worst cluster's error.
+  /// The congruence error (user manual, section Definitions): the worst
+  /// cluster's error.
   double congruence_error = 0;
   /// Per cluster: the largest corner deviation of an instance from the
   /// S-quad after the best proper rigid fit of the S-quad onto it (or the
@@ -111,6 +112,45 @@ struct Tilability_measure
   /// the features of the input).
   Energy_terms normalized_terms;
 };
+
+/// \ingroup PkgTilableSurfacesRef
+/// One S-quad of a tile catalog (`tile_catalog()`), the mold a fabricator
+/// cuts its instances from.
+struct Tile
+{
+  /// The cluster id.
+  std::size_t id = 0;
+  /// The number of faces that are instances of this S-quad.
+  std::size_t instance_count = 0;
+  /// How many of them are mirror images of it, cut from the mirrored mold
+  /// (only with `orientation_policy` `ALLOW_MIRRORED_PANELS`).
+  std::size_t mirrored_count = 0;
+  /// Corners t0..t3 in a canonical frame (t0 at the origin, t1 on +x, t2 in
+  /// the xy plane with y >= 0), in the mesh's units.
+  Quad corners;
+  /// The largest corner deviation of an instance from the S-quad after its
+  /// best rigid fit (proper, or improper for a mirrored instance), in the
+  /// mesh's units.
+  double worst_deviation = 0;
+};
+
+/// \ingroup PkgTilableSurfacesRef
+/// The tile catalog of a measurement: one `Tile` per S-quad, with the
+/// measured worst deviation of its instances, in the mesh's units. The IO
+/// functions of `IO/tile_catalog.h` write it as CSV or JSON.
+inline std::vector<Tile> tile_catalog(const Tilability_measure& m)
+{
+  std::vector<Tile> tiles(m.s_quads.size());
+  for(std::size_t c = 0; c < tiles.size(); ++c)
+  {
+    tiles[c].id = c;
+    tiles[c].instance_count = m.cluster_sizes[c];
+    tiles[c].mirrored_count = m.cluster_mirrored_counts[c];
+    tiles[c].corners = m.s_quads[c];
+    tiles[c].worst_deviation = m.cluster_congruence_errors[c] * m.mean_edge_length;
+  }
+  return tiles;
+}
 
 namespace internal {
 

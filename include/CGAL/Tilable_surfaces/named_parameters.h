@@ -135,6 +135,21 @@ using CGAL::parameters::get_parameter_reference;
 using CGAL::parameters::is_default_parameter;
 
 } // namespace parameters
+
+namespace internal {
+
+// The two maps of a clustered mesh, which the functions that read or write a
+// clustering require: a compile error, naming them, when they are missing.
+template <typename NamedParameters>
+constexpr void require_face_maps()
+{
+  static_assert(!parameters::is_default_parameter<NamedParameters, internal_np::face_cluster_t>::value,
+                "the named parameter face_cluster_map is required");
+  static_assert(!parameters::is_default_parameter<NamedParameters, internal_np::face_orientation_t>::value,
+                "the named parameter face_orientation_map is required");
+}
+
+} // namespace internal
 } // namespace Tilable_surfaces
 } // namespace CGAL
 

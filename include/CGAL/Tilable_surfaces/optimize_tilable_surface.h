@@ -6,11 +6,12 @@
 
 /// \file optimize_tilable_surface.h
 /// Moves the vertices of a clustered quad mesh so that the instances of every
-/// cluster become congruent (paper §4, method notes §4 and §4b).
+/// cluster become congruent (paper §4; user manual, section Optimization).
 
+#include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/exceptions.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/Solver_settings.h>
-#include <CGAL/Tilable_surfaces/internal/Optimization/Tilable_problem.h>
+#include <CGAL/Tilable_surfaces/internal/Tilable_problem.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/closeness_objective.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/conjugate_gradient.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/constrained_gauss_newton.h>
@@ -19,6 +20,7 @@
 #include <CGAL/Tilable_surfaces/measure.h>
 #include <CGAL/Tilable_surfaces/named_parameters.h>
 #include <CGAL/Tilable_surfaces/validation.h>
+#include <CGAL/Tilable_surfaces/visitor.h>
 
 #include <CGAL/Real_timer.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -32,49 +34,6 @@
 
 namespace CGAL {
 namespace Tilable_surfaces {
-
-/// \ingroup PkgTilableSurfacesRef
-/// The solvers of `optimize_tilable_surface()`.
-enum Solver_type
-{
-  /// Default. The surface closest to the input in the metric
-  /// mu1 |X - X0|^2 + mu2 |D (X - X0)|^2 (D the fairness operator, applied to
-  /// the displacement), subject to equal edge lengths per edge-sharing
-  /// component and equal diagonals and signed volume per cluster as *hard*
-  /// constraints: Gauss-Newton SQP steps on the regularized sparse KKT system
-  /// with multiplier updates and a line search on an l2 merit function, then,
-  /// once the constraint residuals stop decreasing, a Levenberg-Marquardt
-  /// projection onto the constraints in the same metric. If that ends short
-  /// of `congruence_tolerance`, it is run again from the input with a more
-  /// cautious trust region, then with the exact Lagrangian Hessian (with
-  /// inertia control and second-order corrections), within the remaining
-  /// iterations, and the best result is kept.
-  /// Only the ratio mu2 / mu1 matters; mu3..mu5 are not used.
-  CONSTRAINED_GAUSS_NEWTON,
-  /// The paper's method, as a reference: Polak-Ribiere nonlinear conjugate
-  /// gradient on the weighted sum mu1 F_d + mu2 F_f + mu3 F_e + mu4 F_a +
-  /// mu5 F_o of the paper's terms, on the input normalized to a unit
-  /// bounding-box diagonal. It stops when the energy stalls, congruent or not.
-  PAPER_CONJUGATE_GRADIENT
-};
-
-/// \ingroup PkgTilableSurfacesRef
-/// The visitor of `optimize_tilable_surface()` that does nothing; derive from
-/// it, or write a class with the same member, to follow or stop the solver.
-struct Default_optimization_visitor
-{
-  /// Called after iteration `iteration` (from 1) with the congruence error
-  /// (method notes §1) and the solver's objective (on the normalized input).
-  /// Returning `false` stops the solver. The default solver measures the
-  /// congruence error only when it may meet the tolerance and every 10
-  /// iterations; in between it passes its estimate, the largest constraint
-  /// residual in mean edge lengths. `Optimization_result::converged` is
-  /// always decided on the measured value.
-  bool iteration(int /*iteration*/, double /*congruence_error*/, double /*objective*/)
-  {
-    return true;
-  }
-};
 
 /// \ingroup PkgTilableSurfacesRef
 /// What `optimize_tilable_surface()` did and what it achieved.
@@ -104,34 +63,9 @@ struct Optimization_result
   Tilability_measure measure;
 };
 
-/// \ingroup PkgTilableSurfacesRef
-/// The default of `fairness_weight` (mu2) for `solver`: for the default
-/// solver the weight of the as-rigid-as-possible energy of the displacement
-/// relative to `distance_weight` 1e-4; for the paper's conjugate gradient the
-/// paper's weight of its fairness term F_f.
-inline double default_fairness_weight(Solver_type solver)
-{
-  return solver == CONSTRAINED_GAUSS_NEWTON ? 1e-6 : 1e-4;
-}
-
-/// \ingroup PkgTilableSurfacesRef
-/// The default of `number_of_iterations` for `solver`: 300 Gauss-Newton
-/// iterations, or 5000 of the paper's conjugate gradient.
-inline int default_number_of_iterations(Solver_type solver)
-{
-  return solver == CONSTRAINED_GAUSS_NEWTON ? 300 : 5000;
-}
 
 namespace internal {
 
-// The visitor of `np`, or a `Default_optimization_visitor`: a copy.
-template <typename NamedParameters>
-auto visitor_of(const NamedParameters& np)
-{
-  typedef typename CGAL::internal_np::Lookup_named_param_def<
-    CGAL::internal_np::visitor_t, NamedParameters, Default_optimization_visitor>::type Visitor;
-  return parameters::choose_parameter<Visitor>(parameters::get_parameter(np, CGAL::internal_np::visitor));
-}
 
 inline void check_parameter(bool ok, const std::string& what)
 {
@@ -165,18 +99,22 @@ struct Optimization_setup
 
     validate_quad_mesh(pm, np);
     problem = make_tilable_problem(pm, np);
-    solver = choose_parameter(get_parameter(np, TS_np::solver), CONSTRAINED_GAUSS_NEWTON);
+    solver = choose_parameter(get_parameter(np, TS_np::solver), defaults::solver);
     const bool gauss_newton = (solver == CONSTRAINED_GAUSS_NEWTON);
-    settings.weights.distance = choose_parameter(get_parameter(np, TS_np::distance_weight), 1e-4);
+    settings.weights.distance = choose_parameter(get_parameter(np, TS_np::distance_weight), defaults::distance_weight);
     settings.weights.fairness = choose_parameter(get_parameter(np, TS_np::fairness_weight),
                                                  default_fairness_weight(solver));
-    const double tangential = choose_parameter(get_parameter(np, TS_np::tangential_weight), 0.1);
-    settings.weights.edge_length = choose_parameter(get_parameter(np, TS_np::edge_length_weight), 1.0);
-    settings.weights.diagonal = choose_parameter(get_parameter(np, TS_np::diagonal_weight), 1.0);
-    settings.weights.volume = choose_parameter(get_parameter(np, TS_np::volume_weight), 1.0);
-    settings.congruence_tolerance = choose_parameter(get_parameter(np, TS_np::congruence_tolerance), 1e-6);
+    const double tangential = choose_parameter(get_parameter(np, TS_np::tangential_weight),
+                                             defaults::tangential_weight);
+    settings.weights.edge_length = choose_parameter(get_parameter(np, TS_np::edge_length_weight),
+                                                   defaults::edge_length_weight);
+    settings.weights.diagonal = choose_parameter(get_parameter(np, TS_np::diagonal_weight),
+                                                defaults::diagonal_weight);
+    settings.weights.volume = choose_parameter(get_parameter(np, TS_np::volume_weight), defaults::volume_weight);
+    settings.congruence_tolerance = choose_parameter(get_parameter(np, TS_np::congruence_tolerance),
+                                                     defaults::congruence_tolerance);
     settings.convergence_tolerance =
-      choose_parameter(get_parameter(np, TS_np::convergence_tolerance), gauss_newton ? 1e-9 : 1e-12);
+      choose_parameter(get_parameter(np, TS_np::convergence_tolerance), default_convergence_tolerance(solver));
     settings.max_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
                                                default_number_of_iterations(solver));
 
@@ -221,7 +159,7 @@ struct Optimization_setup
 /// the clustering given in `np`: the instances of each cluster congruent up to
 /// proper rigid motions (or any rigid motion, mirrors included, with
 /// `orientation_policy` `ALLOW_MIRRORED_PANELS`), within
-/// `congruence_tolerance` (method notes §1).
+/// `congruence_tolerance` (user manual, section Definitions).
 ///
 /// The input is checked first (`validate_quad_mesh()`, cluster ids and
 /// orientations) and nothing is modified when it is refused. The solvers work
@@ -267,8 +205,8 @@ struct Optimization_setup
 ///   \cgalParamNBegin{edge_is_constrained_map} feature edges, replacing the
 ///     detection by angle \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_is_constrained_map} vertices that must not move \cgalParamNEnd
-///   \cgalParamNBegin{visitor} a model of `Default_optimization_visitor`'s
-///     interface, copied \cgalParamNEnd
+///   \cgalParamNBegin{visitor} a `Default_visitor` (or a class with its
+///     interface), by value or as `std::ref` \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_point_map} the points of the vertices \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_index_map} indices of the vertices, for messages
 ///     and internal arrays \cgalParamNEnd
@@ -303,7 +241,7 @@ Optimization_result optimize_tilable_surface(PolygonMesh& pm, const CGAL_NP_CLAS
   result.setup_time = timer.time();
 
   timer.reset();
-  auto visitor = internal::visitor_of(np);
+  auto&& visitor = internal::visitor_of(np);
   internal::Point_matrix X;
   const internal::Solver_report report =
     setup.solver == CONSTRAINED_GAUSS_NEWTON

@@ -8,11 +8,12 @@
 /// Shape analysis of quads: orientations (vertex correspondences), edge and
 /// diagonal lengths, signed volume, a rotation-invariant descriptor, the best
 /// proper rigid fit, the dissimilarity of the paper (§3) and the congruence
-/// error of instances against an S-quad (method notes §1).
+/// error of instances against an S-quad (user manual, section Definitions).
 ///
 /// All computations are done in double precision with Eigen, whatever the
 /// kernel of the mesh: the quantities are measurements, not predicates.
 
+#include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/exceptions.h>
 #include <CGAL/Tilable_surfaces/named_parameters.h>
 
@@ -124,19 +125,6 @@ private:
   unsigned char m_index;
 };
 
-/// \ingroup PkgTilableSurfacesRef
-/// Which instances count as copies of one S-quad (method notes §5,
-/// "reflection policy").
-enum Orientation_policy
-{
-  /// All 8 correspondences, proper rigid motions only (the paper's setting).
-  PROPER_RIGID_MOTIONS = 0,
-  /// Only the 4 correspondences that keep the cyclic order: panels with a
-  /// finished face are never turned over.
-  NO_TURNED_OVER_PANELS,
-  /// All 8 correspondences and mirror images too (molds symmetric by a plane).
-  ALLOW_MIRRORED_PANELS
-};
 
 /// \ingroup PkgTilableSurfacesRef
 /// Returns the quad `r` with `r[i] = q[o(i)]`: the corners of `q` listed in the
@@ -334,7 +322,8 @@ inline double dissimilarity(const Quad& p, const Quad& q,
 /// \ingroup PkgTilableSurfacesRef
 /// The congruence error of a set of instances against an S-quad: the worst
 /// instance's largest corner deviation after its best rigid fit, divided by
-/// `length_scale` (method notes §1 use the mean edge length of the mesh).
+/// `length_scale` (the package's congruence error uses the mean edge length
+/// of the mesh: user manual, section Definitions).
 /// Each instance must already be in the template's labelling (see
 /// `reoriented()`). Returns 0 for an empty range.
 template <typename QuadRange>
@@ -345,6 +334,23 @@ double congruence_error(const QuadRange& instances, const Quad& s_quad,
   for(const Quad& instance : instances)
     worst = (std::max)(worst, rigid_fit_deviation(s_quad, instance, allow_mirror));
   return worst / length_scale;
+}
+
+/// \ingroup PkgTilableSurfacesRef
+/// The halfedges of the four edges of quad `f`: entry `j` is face edge j, from
+/// the face's vertex v_j to v_{j+1} (the vertices as `face_quad()` lists them),
+/// that is next^(j+1)(halfedge(f, pm)), since `vertices_around_face()` starts at
+/// the target of `halfedge(f, pm)`. `Quad_orientation::face_edge()` and the
+/// edge-sharing graph number a face's edges this way.
+template <typename PolygonMesh>
+std::array<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor, 4>
+face_edge_halfedges(typename boost::graph_traits<PolygonMesh>::face_descriptor f, const PolygonMesh& pm)
+{
+  std::array<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor, 4> h;
+  h[0] = next(halfedge(f, pm), pm);
+  for(int j = 1; j < 4; ++j)
+    h[j] = next(h[j - 1], pm);
+  return h;
 }
 
 /// \ingroup PkgTilableSurfacesRef

@@ -155,22 +155,24 @@ void read_OFF_soup(std::istream& in, std::size_t size, std::vector<Point>& point
                      " and " + std::to_string(polygons.size()));
 }
 
-// PLY: each element count times the fewest bytes one element takes, and each
-// list's length, against the bytes left in the file (CGAL's reader sizes its
-// buffers by them). Binary bodies are walked property by property.
-inline void check_PLY_counts(std::istream& in, std::size_t size)
+struct PLY_property { int count_bytes = 0; int value_bytes = 0; std::string count_type; };
+struct PLY_element { std::string name; std::size_t count = 0; std::vector<PLY_property> properties; };
+struct PLY_header { std::string format; std::vector<PLY_element> elements; };
+
+inline int PLY_type_bytes(const std::string& t)
 {
-  struct Property { int count_bytes = 0; int value_bytes = 0; std::string count_type; };
-  struct Element { std::string name; std::size_t count = 0; std::vector<Property> properties; };
-  auto type_bytes = [](const std::string& t) -> int {
-    if(t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
-    if(t == "short" || t == "ushort" || t == "int16" || t == "uint16") return 2;
-    if(t == "int" || t == "uint" || t == "float" || t == "int32" || t == "uint32" || t == "float32") return 4;
-    if(t == "double" || t == "float64") return 8;
-    throw File_error("the PLY header has an unknown type '" + t + "'");
-  };
-  std::string line, format;
-  std::vector<Element> elements;
+  if(t == "char" || t == "uchar" || t == "int8" || t == "uint8") return 1;
+  if(t == "short" || t == "ushort" || t == "int16" || t == "uint16") return 2;
+  if(t == "int" || t == "uint" || t == "float" || t == "int32" || t == "uint32" || t == "float32") return 4;
+  if(t == "double" || t == "float64") return 8;
+  throw File_error("the PLY header has an unknown type '" + t + "'");
+}
+
+// The header up to end_header, each element count at most `size`.
+inline PLY_header read_PLY_header(std::istream& in, std::size_t size)
+{
+  PLY_header header;
+  std::string line;
   std::getline(in, line);
   if(line.compare(0, 3, "ply") != 0)
     throw File_error("not a PLY file: it does not start with ply");
@@ -182,35 +184,66 @@ inline void check_PLY_counts(std::istream& in, std::size_t size)
     if(t[0] == "end_header")
       break;
     if(t[0] == "format" && t.size() >= 2)
-      format = t[1];
+      header.format = t[1];
     else if(t[0] == "element" && t.size() >= 3)
-      elements.push_back(Element{t[1], parse_count(t[2], size, size, "the PLY " + t[1] + " count"), {}});
-    else if(t[0] == "property" && !elements.empty() && t.size() >= 3)
+      header.elements.push_back(PLY_element{t[1], parse_count(t[2], size, size, "the PLY " + t[1] + " count"), {}});
+    else if(t[0] == "property" && !header.elements.empty() && t.size() >= 3)
     {
-      Property p;
+      PLY_property p;
       if(t[1] == "list" && t.size() >= 5)
       {
         p.count_type = t[2];
-        p.count_bytes = type_bytes(t[2]);
-        p.value_bytes = type_bytes(t[3]);
+        p.count_bytes = PLY_type_bytes(t[2]);
+        p.value_bytes = PLY_type_bytes(t[3]);
       }
       else
-        p.value_bytes = type_bytes(t[1]);
-      elements.back().properties.push_back(p);
+        p.value_bytes = PLY_type_bytes(t[1]);
+      header.elements.back().properties.push_back(p);
     }
     else
       throw File_error("the PLY header has an unexpected line '" + line + "'");
   }
-  const bool ascii = (format == "ascii");
-  if(!ascii && format != "binary_little_endian" && format != "binary_big_endian")
-    throw File_error("the PLY format is '" + format + "', not ascii or binary");
+  if(header.format != "ascii" && header.format != "binary_little_endian" && header.format != "binary_big_endian")
+    throw File_error("the PLY format is '" + header.format + "', not ascii or binary");
+  return header;
+}
+
+// The length of list property `p` read at the current position, -1 if
+// negative, NaN if unreadable.
+inline long double read_PLY_list_length(std::istream& in, const PLY_header& header, const PLY_property& p)
+{
+  const long double unreadable = std::numeric_limits<long double>::quiet_NaN();
+  if(header.format == "ascii")
+  {
+    std::string token;
+    if(!(in >> token)) return unreadable;
+    try { return std::stold(token); } catch(const std::exception&) { return unreadable; }
+  }
+  const bool little = (header.format == "binary_little_endian");
+  unsigned char b[8] = {0};
+  if(!in.read(reinterpret_cast<char*>(b), p.count_bytes)) return unreadable;
+  std::uint64_t u = 0;
+  for(int i = 0; i < p.count_bytes; ++i)
+    u |= std::uint64_t(b[little ? i : p.count_bytes - 1 - i]) << (8 * i);
+  const bool is_signed = p.count_type[0] != 'u';
+  if(is_signed && (u >> (8 * p.count_bytes - 1)) & 1u) return -1;
+  return static_cast<long double>(u);
+}
+
+// PLY: each element count times the fewest bytes one element takes, and each
+// list's length, against the bytes left in the file (CGAL's reader sizes its
+// buffers by them). Binary bodies are walked property by property.
+inline void check_PLY_counts(std::istream& in, std::size_t size)
+{
+  const PLY_header header = read_PLY_header(in, size);
+  const bool ascii = (header.format == "ascii");
   const std::size_t body = size - (std::min)(size, std::size_t(in.tellg()));
   // Fewest bytes per element: ascii, 2 per property ("0 "); binary, the sizes.
   long double needed = 0;
-  for(const Element& e : elements)
+  for(const PLY_element& e : header.elements)
   {
     std::size_t bytes = 0;
-    for(const Property& p : e.properties)
+    for(const PLY_property& p : e.properties)
       bytes += ascii ? 2 : std::size_t(p.count_bytes > 0 ? p.count_bytes : p.value_bytes);
     needed += static_cast<long double>(e.count) * static_cast<long double>((std::max)(bytes, std::size_t(1)));
   }
@@ -219,27 +252,9 @@ inline void check_PLY_counts(std::istream& in, std::size_t size)
                         " bytes of data can hold");
 
   // Lists: the length read before the values must fit in what is left.
-  const bool little = (format == "binary_little_endian");
-  const long double unreadable = std::numeric_limits<long double>::quiet_NaN();
-  auto read_count = [&](const Property& p) -> long double {
-    if(ascii)
-    {
-      std::string token;
-      if(!(in >> token)) return unreadable;
-      try { return std::stold(token); } catch(const std::exception&) { return unreadable; }
-    }
-    unsigned char b[8] = {0};
-    if(!in.read(reinterpret_cast<char*>(b), p.count_bytes)) return unreadable;
-    std::uint64_t u = 0;
-    for(int i = 0; i < p.count_bytes; ++i)
-      u |= std::uint64_t(b[little ? i : p.count_bytes - 1 - i]) << (8 * i);
-    const bool is_signed = p.count_type[0] != 'u';
-    if(is_signed && (u >> (8 * p.count_bytes - 1)) & 1u) return -1;  // negative
-    return static_cast<long double>(u);
-  };
-  for(const Element& e : elements)
+  for(const PLY_element& e : header.elements)
     for(std::size_t i = 0; i < e.count; ++i)
-      for(const Property& p : e.properties)
+      for(const PLY_property& p : e.properties)
       {
         if(p.count_bytes == 0)
         {
@@ -248,7 +263,7 @@ inline void check_PLY_counts(std::istream& in, std::size_t size)
             return;  // truncated: CGAL's reader reports it
           continue;
         }
-        const long double n = read_count(p);
+        const long double n = read_PLY_list_length(in, header, p);
         const std::streamoff here = in.tellg();
         if(std::isnan(n) || here < 0)
           return;  // unreadable or truncated: CGAL's reader fails on it too

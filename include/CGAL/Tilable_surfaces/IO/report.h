@@ -7,7 +7,7 @@
 /// \file report.h
 /// A JSON report of everything `make_k_set_tilable()` measured.
 
-#include <CGAL/Tilable_surfaces/make_k_set_tilable.h>
+#include <CGAL/Tilable_surfaces/K_set_tilable_result.h>
 
 #include <nlohmann/json.hpp>
 

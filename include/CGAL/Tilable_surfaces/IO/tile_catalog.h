@@ -11,7 +11,7 @@
 /// CSV, or JSON (with nlohmann::json, Debian's `nlohmann-json3-dev`).
 
 #include <CGAL/Tilable_surfaces/exceptions.h>
-#include <CGAL/Tilable_surfaces/quad_shape.h>
+#include <CGAL/Tilable_surfaces/measure.h>
 
 #include <nlohmann/json.hpp>
 
@@ -26,26 +26,6 @@
 namespace CGAL {
 namespace Tilable_surfaces {
 namespace IO {
-
-/// \ingroup PkgTilableSurfacesRef
-/// One S-quad of a tile catalog.
-struct Tile
-{
-  /// The cluster id.
-  std::size_t id = 0;
-  /// The number of faces that are instances of this S-quad.
-  std::size_t instance_count = 0;
-  /// How many of them are mirror images of it, cut from the mirrored mold
-  /// (only with `orientation_policy` `ALLOW_MIRRORED_PANELS`).
-  std::size_t mirrored_count = 0;
-  /// Corners t0..t3 in a canonical frame (t0 at the origin, t1 on +x, t2 in
-  /// the xy plane with y >= 0), in the mesh's units.
-  Quad corners;
-  /// The largest corner deviation of an instance from the S-quad after its
-  /// best rigid fit (proper, or improper for a mirrored instance), in the
-  /// mesh's units.
-  double worst_deviation = 0;
-};
 
 namespace internal {
 

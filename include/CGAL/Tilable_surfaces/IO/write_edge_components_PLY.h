@@ -77,12 +77,11 @@ bool write_edge_components_PLY(std::ostream& os, const PolygonMesh& pm,
     const auto c = out.add_vertex(to_point(centroid));
     std::vector<Output_mesh::Vertex_index> ring;
     for(const auto& p : corners) ring.push_back(out.add_vertex(to_point(p)));
-    auto h = halfedge(f, pm);
-    for(std::size_t j = 0; j < ring.size(); ++j)
+    const auto face_edges = face_edge_halfedges(f, pm);
+    for(std::size_t j = 0; j < 4; ++j)
     {
-      h = next(h, pm);  // edge j joins v_j and v_{j+1}
-      const auto t = out.add_face(ring[j], ring[(j + 1) % ring.size()], c);
-      color[t] = colors[std::size_t(get(edge_component_map, edge(h, pm)))];
+      const auto t = out.add_face(ring[j], ring[(j + 1) % 4], c);
+      color[t] = colors[std::size_t(get(edge_component_map, edge(face_edges[j], pm)))];
     }
   }
   if(binary)

@@ -40,13 +40,12 @@
 #include <CGAL/Tilable_surfaces/Edge_sharing_graph.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/fast_match.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/link_count.h>
-#include <CGAL/Tilable_surfaces/internal/Clustering/parallel_for.h>
+#include <CGAL/Tilable_surfaces/internal/parallel_for.h>
 
 #include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
-#include <iostream>
 #include <limits>
 #include <unordered_map>
 #include <unordered_set>
@@ -116,10 +115,10 @@ public:
   // `leaders[c]` is the quad labelling initial cluster c's S-quad.
   Beam_search(const MergeCosts& costs, const std::vector<Quad>& leaders,
               Orientation_policy policy, const Configuration_score& score,
-              std::size_t width, bool auto_merge, bool verbose)
+              std::size_t width, bool auto_merge)
     : m_costs(costs), m_leaders(leaders), m_policy(policy)
     , m_score(score), m_width((std::max)(width, std::size_t(1)))
-    , m_auto_merge(auto_merge), m_verbose(verbose)
+    , m_auto_merge(auto_merge)
   {}
 
   // The initial configuration: one group per initial cluster.
@@ -181,10 +180,6 @@ public:
         apply(next.back(), p);
       }
       beam.swap(next);
-      if(m_verbose && beam.front().alive % 50 == 0)
-        std::cerr << "  beam: " << beam.front().alive << " clusters, best weight "
-                  << beam.front().weight << ", DOF " << beam.front().graph.degree_of_flexibility()
-                  << std::endl;
     }
     return beam;
   }
@@ -462,7 +457,7 @@ private:
   Orientation_policy m_policy;
   Configuration_score m_score;
   std::size_t m_width;
-  bool m_auto_merge, m_verbose;
+  bool m_auto_merge;
   mutable std::unordered_map<std::uint64_t, Quad_orientation> m_correspondences;
 };
 

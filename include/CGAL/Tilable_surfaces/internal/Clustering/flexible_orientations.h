@@ -28,7 +28,7 @@
 
 #include <CGAL/Tilable_surfaces/internal/Clustering/fast_match.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/link_count.h>
-#include <CGAL/Tilable_surfaces/internal/Clustering/parallel_for.h>
+#include <CGAL/Tilable_surfaces/internal/parallel_for.h>
 
 #include <boost/graph/graph_traits.hpp>
 
@@ -61,12 +61,10 @@ std::vector<Shared_edge> shared_edges(const PolygonMesh& pm, FaceIndexMap fim)
   std::vector<Shared_edge> r;
   for(auto f : faces(pm))
   {
-    // As in Edge_sharing_graph: face edge j is next^{j+1}(halfedge(f)).
-    auto h = halfedge(f, pm);
+    const auto face_edges = face_edge_halfedges(f, pm);
     for(int j = 0; j < 4; ++j)
     {
-      h = next(h, pm);
-      const std::size_t e = get(eim, edge(h, pm));
+      const std::size_t e = get(eim, edge(face_edges[std::size_t(j)], pm));
       if(first[e] == std::size_t(-1))
       {
         first[e] = get(fim, f);
@@ -95,7 +93,7 @@ public:
         m_incident[edges[i].face[s]].push_back(i);
     for(std::size_t i = 0; i < edges.size(); ++i)
       add_link(i, +1);
-    m_dof = count_components(m_parent);
+    m_dof = count_components(m_components);
   }
 
   // Local search; at most `sweeps` passes over the faces.
@@ -130,12 +128,6 @@ private:
     std::array<std::uint64_t, 4> vanished, appeared;
     std::size_t nv = 0, na = 0;
   };
-
-  static std::size_t find(std::vector<std::size_t>& parent, std::size_t x)
-  {
-    while(parent[x] != x) x = parent[x] = parent[parent[x]];
-    return x;
-  }
 
   // Node 4c + k of the template edge that shared edge `i` is on its side `s`.
   std::size_t node(std::size_t i, int s) const
@@ -183,18 +175,14 @@ private:
     return c;
   }
 
-  // Number of components of the current links; fills the union-find `parent`.
-  std::size_t count_components(std::vector<std::size_t>& parent) const
+  // Number of components of the current links; fills the union-find `sets`.
+  std::size_t count_components(Union_find<>& sets) const
   {
-    parent.resize(4 * m_k);
-    for(std::size_t i = 0; i < parent.size(); ++i) parent[i] = i;
-    std::size_t components = parent.size();
+    sets.reset(4 * m_k);
+    std::size_t components = 4 * m_k;
     for(const auto& l : m_count)
-    {
-      const std::size_t a = find(parent, std::size_t(l.first >> 32));
-      const std::size_t b = find(parent, std::size_t(l.first & 0xffffffffu));
-      if(a != b) { parent[b] = a; --components; }
-    }
+      if(sets.unite(std::size_t(l.first >> 32), std::size_t(l.first & 0xffffffffu)))
+        --components;
     return components;
   }
 
@@ -215,8 +203,8 @@ private:
     {
       std::array<std::pair<std::size_t, std::size_t>, 4> joined;
       for(std::size_t i = 0; i < c.na; ++i)
-        joined[i] = {find(m_parent, std::size_t(c.appeared[i] >> 32)),
-                     find(m_parent, std::size_t(c.appeared[i] & 0xffffffffu))};
+        joined[i] = {m_components.find(std::size_t(c.appeared[i] >> 32)),
+                     m_components.find(std::size_t(c.appeared[i] & 0xffffffffu))};
       dof -= number_of_joins(joined, c.na);
     }
     const bool better =
@@ -229,14 +217,10 @@ private:
       return false;
     }
     if(c.nv > 0)
-      m_parent.swap(m_recount);
+      m_components.swap(m_recount);
     else
       for(std::size_t i = 0; i < c.na; ++i)
-      {
-        const std::size_t a = find(m_parent, std::size_t(c.appeared[i] >> 32));
-        const std::size_t b = find(m_parent, std::size_t(c.appeared[i] & 0xffffffffu));
-        if(a != b) m_parent[b] = a;
-      }
+        m_components.unite(std::size_t(c.appeared[i] >> 32), std::size_t(c.appeared[i] & 0xffffffffu));
     m_dof = dof;
     return true;
   }
@@ -256,8 +240,8 @@ private:
   std::vector<std::vector<std::size_t> > m_incident;
   std::unordered_map<std::uint64_t, int> m_count;  // distinct links and their multiplicity
   long long m_links = 0;                             // links, with multiplicity
-  std::vector<std::size_t> m_parent;                 // union-find of the distinct links
-  std::vector<std::size_t> m_recount;                // scratch for recounts
+  Union_find<> m_components;                         // of the distinct links
+  Union_find<> m_recount;                            // scratch for recounts
   std::size_t m_dof = 0;
 };
 

@@ -12,7 +12,7 @@
 
 #include <CGAL/Tilable_surfaces/internal/Clustering/descriptor_index.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/fast_match.h>
-#include <CGAL/Tilable_surfaces/internal/Clustering/parallel_for.h>
+#include <CGAL/Tilable_surfaces/internal/parallel_for.h>
 
 #include <cstddef>
 #include <limits>

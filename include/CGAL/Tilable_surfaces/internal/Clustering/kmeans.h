@@ -8,7 +8,7 @@
 // enriches the candidate pool; also the first step of splitting a cluster).
 // Seeding is k-means++ with a `CGAL::Random`, so results follow the seed.
 
-#include <CGAL/Tilable_surfaces/internal/Clustering/parallel_for.h>
+#include <CGAL/Tilable_surfaces/internal/parallel_for.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 
 #include <CGAL/Random.h>

@@ -10,7 +10,7 @@
 // are averaged, and the mean becomes the next reference.
 
 #include <CGAL/Tilable_surfaces/internal/Clustering/fast_match.h>
-#include <CGAL/Tilable_surfaces/internal/Clustering/parallel_for.h>
+#include <CGAL/Tilable_surfaces/internal/parallel_for.h>
 
 #include <cstddef>
 #include <vector>

@@ -61,9 +61,7 @@ std::vector<std::size_t> ordered_strip(const PolygonMesh& pm, FaceIndexMap fim,
                                        typename boost::graph_traits<PolygonMesh>::face_descriptor f, int j)
 {
   typedef typename boost::graph_traits<PolygonMesh>::halfedge_descriptor halfedge_descriptor;
-  halfedge_descriptor h = halfedge(f, pm);
-  for(int i = 0; i <= j; ++i)
-    h = next(h, pm);
+  const halfedge_descriptor h = face_edge_halfedges(f, pm)[std::size_t(j)];
   // Walks out of f through `exit`, appending the faces met, until a border
   // (false) or f again (true: a closed strip).
   auto walk = [&](halfedge_descriptor exit, std::vector<std::size_t>& out) {

@@ -26,13 +26,12 @@
 
 #include <CGAL/Tilable_surfaces/internal/Clustering/cluster_analysis.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/initial_clustering.h>
-#include <CGAL/Tilable_surfaces/internal/Clustering/parallel_for.h>
+#include <CGAL/Tilable_surfaces/internal/Union_find.h>
+#include <CGAL/Tilable_surfaces/internal/parallel_for.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 
 #include <CGAL/Random.h>
 #include <CGAL/boost/graph/helpers.h>
-
-#include <boost/pending/disjoint_sets.hpp>
 
 #include <algorithm>
 #include <array>
@@ -92,34 +91,26 @@ template <typename PolygonMesh, typename FaceIndexMap>
 std::array<std::vector<std::size_t>, 2> quad_strips(const PolygonMesh& pm, FaceIndexMap fim)
 {
   const std::size_t n = num_faces(pm);
-  boost::disjoint_sets_with_storage<> sets(2 * n);
-  for(std::size_t i = 0; i < 2 * n; ++i)
-    sets.make_set(i);
-  // Node 2 f + (j mod 2): face f's strip through its face edge j, where face
-  // edge j is next^{j+1}(halfedge(f)) (see Edge_sharing_graph).
+  Union_find<> sets(2 * n);
+  // Node 2 f + (j mod 2): face f's strip through its face edge j.
   auto node = [&](typename boost::graph_traits<PolygonMesh>::halfedge_descriptor h) {
     const auto f = face(h, pm);
-    auto g = halfedge(f, pm);
-    for(int j = 0; j < 4; ++j)
-    {
-      g = next(g, pm);
-      if(g == h)
-        return 2 * std::size_t(get(fim, f)) + std::size_t(j % 2);
-    }
-    return 2 * std::size_t(get(fim, f));
+    const auto face_edges = face_edge_halfedges(f, pm);
+    const std::size_t j = std::size_t(std::find(face_edges.begin(), face_edges.end(), h) - face_edges.begin());
+    return 2 * std::size_t(get(fim, f)) + j % 2;
   };
   for(auto e : edges(pm))
   {
     const auto h = halfedge(e, pm);
     if(is_border_edge(h, pm))
       continue;
-    sets.union_set(node(h), node(opposite(h, pm)));
+    sets.unite(node(h), node(opposite(h, pm)));
   }
   std::array<std::vector<std::size_t>, 2> strip{{std::vector<std::size_t>(n), std::vector<std::size_t>(n)}};
   for(int d = 0; d < 2; ++d)
   {
     for(std::size_t f = 0; f < n; ++f)
-      strip[d][f] = sets.find_set(2 * f + std::size_t(d));
+      strip[d][f] = sets.find(2 * f + std::size_t(d));
     relabel_by_first_face(strip[d]);
   }
   return strip;

@@ -14,7 +14,7 @@
 // needed: samples of the result near the input say nothing of parts of the
 // input the result left.
 
-#include <CGAL/Tilable_surfaces/internal/Optimization/Tilable_problem.h>
+#include <CGAL/Tilable_surfaces/internal/Tilable_problem.h>
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>

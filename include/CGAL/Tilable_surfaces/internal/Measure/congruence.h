@@ -10,7 +10,7 @@
 // the S-quad onto it: a proper one, or either kind when the problem allows
 // mirrored panels.
 
-#include <CGAL/Tilable_surfaces/internal/Optimization/Tilable_problem.h>
+#include <CGAL/Tilable_surfaces/internal/Tilable_problem.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 
 #include <algorithm>
@@ -117,7 +117,7 @@ inline double worst_diagonal_distance(const Tilable_problem& problem, const Poin
   return worst;
 }
 
-// The congruence error of method notes §1: worst cluster error / mean edge
+// The congruence error (user manual, section Definitions): worst cluster error / mean edge
 // length; with planar tiles, the worst distance between the diagonals of a
 // face too, so that the solvers stop only on planar panels.
 inline double congruence_error(const Tilable_problem& problem, const Point_matrix& X)

@@ -7,7 +7,7 @@
 // What both solvers receive and return. They work on positions normalized to
 // a unit bounding-box diagonal, so every tolerance below is relative.
 
-#include <CGAL/Tilable_surfaces/internal/Optimization/Tilable_problem.h>
+#include <CGAL/Tilable_surfaces/internal/Tilable_problem.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/energy_terms.h>
 
 #include <Eigen/Core>

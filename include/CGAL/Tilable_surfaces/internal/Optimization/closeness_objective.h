@@ -30,7 +30,7 @@
 //   dE/dx_i = sum_{j ~ i} 2 (2 (x_i - x_j) - (R_i + R_j)(x0_i - x0_j)).
 // The Gauss-Newton model of f is then the constant metric H = M + 2 r L.
 
-#include <CGAL/Tilable_surfaces/internal/Optimization/Tilable_problem.h>
+#include <CGAL/Tilable_surfaces/internal/Tilable_problem.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/feature_detection.h>
 
 #include <CGAL/boost/graph/helpers.h>

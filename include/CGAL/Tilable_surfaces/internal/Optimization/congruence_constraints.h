@@ -12,7 +12,8 @@
 //   w = volume_shape() (Volume_quantity);
 // - with planar tiles, one more row per cluster, the volume of its first
 //   instance against 0: with the others' equal to it, every panel is planar.
-// Both are invariant under scaling of the surface (method notes §4b): with
+// Both are invariant under scaling of the surface (user manual, section
+// Optimization): with
 // absolute differences, shrinking the mesh lowers every residual, and far
 // from a solution the Gauss-Newton steps head for a collapsed surface. With
 // the edges and diagonals of instances equal, equal w means equal volume.
@@ -20,7 +21,7 @@
 // lagrangian_hessian() gives sum_r lambda_r d^2 c_r / dX^2: the constraints'
 // curvature, without which the SQP steps converge only linearly.
 
-#include <CGAL/Tilable_surfaces/internal/Clustering/parallel_for.h>
+#include <CGAL/Tilable_surfaces/internal/parallel_for.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/energy_terms.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/quantity_hessian.h>
 

@@ -22,7 +22,7 @@
 // auxiliary target variable, hence no dense row), with a few multiplier
 // passes on the same factorization to remove the regularization's bias. The
 // regularization makes redundant constraints harmless (K << F is
-// over-determined, method notes §4b). Globalization: a trust region on the
+// over-determined: user manual, section Optimization). Globalization: a trust region on the
 // largest vertex move and a backtracking line search on the l2 merit
 // 1/2 d^T H d + nu |c|.
 //
@@ -104,229 +104,316 @@ inline Eigen::VectorXd multiplier_step(const SPD_solver& solver, const Eigen::Sp
 // metric alone).
 enum Sqp_variant { GAUSS_NEWTON, ISOTROPIC_GAUSS_NEWTON, CAUTIOUS_GAUSS_NEWTON, EXACT_HESSIAN };
 
+// The tuning of one attempt, each constant named once.
+struct Sqp_tuning
+{
+  // The congruence error is measured for the visitor every so many iterations.
+  static constexpr int measure_period = 10;
+  // Trust region on the largest vertex move, in mean edge lengths: start, floor.
+  static constexpr double initial_radius = 0.5, min_radius = 1e-3;
+  // Inertia control: the first shift of an indefinite KKT matrix, its growth
+  // until positive definite, the shift that gives up, and its decay and
+  // floor from one iteration to the next.
+  static constexpr double first_shift = 1e-4, shift_growth = 10, max_shift = 1e8;
+  static constexpr double shift_decay = 3, min_shift = 1e-8;
+  // Progress: an error below this fraction of the best so far; how many
+  // iterations without it end a phase.
+  static constexpr double progress = 0.9;
+  static constexpr int gauss_newton_patience = 5, exact_hessian_patience = 10, projection_patience = 10;
+  // Relative accuracy of the multiplier passes (at most, with the exact Hessian).
+  static constexpr double multiplier_accuracy = 1e-3;
+  // Armijo's sufficient decrease, and the shortest step fraction tried.
+  static constexpr double armijo = 1e-4, min_step_fraction = 1e-6;
+  // Levenberg-Marquardt: mu = theta |c|_inf / ell, floored so that round-off
+  // is not amplified; theta grows or shrinks by this factor within its
+  // bounds, on the gain ratio rho of actual to predicted decrease.
+  static constexpr double min_damping = 1e-8, damping_factor = 4, max_theta = 1e12;
+  static constexpr double min_gain_ratio = 1e-4, poor_gain_ratio = 0.25, good_gain_ratio = 0.75;
+  // Once congruent, the projection stops at this fraction of the tolerance.
+  static constexpr double round_off_residual = 1e-3;
+};
+
 // One solve from the input, numbering its iterations from `first_iteration`
 // + 1; `stopped` tells whether the visitor stopped it. Phase 1 uses the
 // exact Lagrangian Hessian or only H (Gauss-Newton), as `variant` says.
 template <typename Visitor>
-Solver_report constrained_gauss_newton_attempt(const Solver_input& in, const Solver_settings& settings,
-                                               Sqp_variant variant, int first_iteration,
-                                               Point_matrix& X, Visitor& visitor, bool& stopped)
+class Sqp_attempt
 {
-  const bool exact_hessian = variant == EXACT_HESSIAN;
   typedef Eigen::SparseMatrix<double> Matrix;
-  std::vector<int> variable;
-  const int n = number_free_unknowns(in.fixed, variable);
-  const double ell = mean_edge_length(in.problem, in.X0);
-  const double tolerance = settings.congruence_tolerance;
-  const Congruence_constraints constraints(in.problem, ell);
-  const std::vector<Eigen::Matrix3d> isotropic(variant == ISOTROPIC_GAUSS_NEWTON ? in.metric.size() : 0,
-                                               Eigen::Matrix3d::Identity());
-  const Closeness_objective objective(in.problem, in.X0,
-                                      variant == ISOTROPIC_GAUSS_NEWTON ? isotropic : in.metric,
-                                      settings.weights.fairness / settings.weights.distance, variable, n);
-  const Matrix& H = objective.hessian();
-  const double b = kkt_regularization();
-  const int measure_period = 10;
+  typedef Sqp_tuning T;
 
-  auto positions = [&](const Eigen::VectorXd& d) {
-    Point_matrix Y = in.X0;
-    for(int v = 0; v < int(variable.size()); ++v)
-      if(variable[v] >= 0)
-        Y.row(v) += d.segment<3>(variable[v]).transpose();
+public:
+  Sqp_attempt(const Solver_input& in, const Solver_settings& settings, Sqp_variant variant,
+              int first_iteration, Point_matrix& X, Visitor& visitor, bool& stopped)
+    : m_in(in), m_settings(settings), m_variant(variant), m_exact_hessian(variant == EXACT_HESSIAN)
+    , m_n(number_free_unknowns(in.fixed, m_variable)), m_ell(mean_edge_length(in.problem, in.X0))
+    , m_tolerance(settings.congruence_tolerance), m_constraints(in.problem, m_ell)
+    , m_isotropic(variant == ISOTROPIC_GAUSS_NEWTON ? in.metric.size() : 0, Eigen::Matrix3d::Identity())
+    , m_objective(in.problem, in.X0, variant == ISOTROPIC_GAUSS_NEWTON ? m_isotropic : in.metric,
+                  settings.weights.fairness / settings.weights.distance, m_variable, m_n)
+    , m_X(X), m_visitor(visitor), m_stopped(stopped), m_it(first_iteration)
+  {}
+
+  Solver_report run()
+  {
+    m_X = m_in.X0;
+    m_report.congruence_error = congruence_error(m_in.problem, m_X);
+    if(m_n == 0 || m_constraints.number_of_rows() == 0)
+      return m_report;
+    m_d = Eigen::VectorXd::Zero(m_n);
+    m_constraints.evaluate(m_X, m_variable, m_n, m_c, nullptr);
+    m_stopped = false;
+    if(sqp_phase() || projection_phase())
+      return m_report;
+    if(!m_measured)
+      m_report.congruence_error = congruence_error(m_in.problem, m_X);
+    return m_report;
+  }
+
+private:
+  Point_matrix positions(const Eigen::VectorXd& d) const
+  {
+    Point_matrix Y = m_in.X0;
+    for(int v = 0; v < int(m_variable.size()); ++v)
+      if(m_variable[v] >= 0)
+        Y.row(v) += d.segment<3>(m_variable[v]).transpose();
     return Y;
-  };
-  auto largest_move = [&](const Eigen::VectorXd& delta) {
+  }
+
+  double largest_move(const Eigen::VectorXd& delta) const
+  {
     double m = 0;
-    for(int k = 0; k < n; k += 3)
+    for(int k = 0; k < m_n; k += 3)
       m = (std::max)(m, delta.segment<3>(k).norm());
     return m;
-  };
-
-  Eigen::VectorXd d = Eigen::VectorXd::Zero(n), c, c_trial, delta;
-  Matrix J, identity(n, n);
-  identity.setIdentity();
-  SPD_solver solver;
-  Solver_report report;
-  X = in.X0;
-  report.congruence_error = congruence_error(in.problem, X);
-  if(n == 0 || constraints.number_of_rows() == 0)
-    return report;
-  constraints.evaluate(X, variable, n, c, nullptr);
+  }
 
   // After an accepted step: the congruence estimate, measured when it may
   // meet the tolerance; false when the visitor stops the solver.
-  int it = first_iteration;
-  bool measured = false;
-  stopped = false;
-  auto record = [&]() {
-    ++it;
-    report.iterations = it;
-    report.objective = settings.weights.distance * objective.value(X);
-    const double residual = c.cwiseAbs().maxCoeff() / ell;
-    measured = residual <= tolerance || it % measure_period == 0;
-    report.congruence_error = measured ? congruence_error(in.problem, X) : residual;
-    stopped = !visitor.iteration(it, report.congruence_error, report.objective);
-    return !stopped;
-  };
-  auto congruent = [&]() { return measured && report.congruence_error <= tolerance; };
+  bool record()
+  {
+    ++m_it;
+    m_report.iterations = m_it;
+    m_report.objective = m_settings.weights.distance * m_objective.value(m_X);
+    const double residual = m_c.cwiseAbs().maxCoeff() / m_ell;
+    m_measured = residual <= m_tolerance || m_it % T::measure_period == 0;
+    m_report.congruence_error = m_measured ? congruence_error(m_in.problem, m_X) : residual;
+    m_stopped = !m_visitor.iteration(m_it, m_report.congruence_error, m_report.objective);
+    return !m_stopped;
+  }
 
-  auto kkt_step = [&](const Eigen::VectorXd& gradient, const Eigen::VectorXd& target,
-                      Eigen::VectorXd& multipliers, double eta) {
-    return multiplier_step(solver, J, b, gradient, target, multipliers, eta);
-  };
+  bool congruent() const { return m_measured && m_report.congruence_error <= m_tolerance; }
+
+  Eigen::VectorXd kkt_step(const Eigen::VectorXd& gradient, const Eigen::VectorXd& target,
+                           Eigen::VectorXd& multipliers, double eta) const
+  {
+    return multiplier_step(m_solver, m_J, kkt_regularization(), gradient, target, multipliers, eta);
+  }
+
+  // Factorizes K + shift I, raising the shift until it is positive definite;
+  // false when it cannot be.
+  bool factorize_shifted(const Matrix& K, double& shift)
+  {
+    Matrix identity(m_n, m_n);
+    identity.setIdentity();
+    shift = shift == 0 ? 0 : (std::max)(shift / T::shift_decay, T::min_shift);
+    while(!m_solver.factorize(Matrix(K + shift * identity)) && shift < T::max_shift)
+      shift = shift == 0 ? T::first_shift : T::shift_growth * shift;
+    return m_solver.positive_definite() && shift < T::max_shift;
+  }
 
   // Phase 1: SQP steps, with the exact Lagrangian Hessian
   // W = H + sum lambda_i d^2 c_i shifted by shift I until the KKT matrix has
   // the inertia of a minimum (inertia control, as in IPOPT), while they
-  // make progress.
-  double nu = 0, radius = 0.5, shift = 0, best_error = std::numeric_limits<double>::infinity();
-  int iterations_since_best = 0;
-  Eigen::VectorXd lambda = Eigen::VectorXd::Zero(c.size());
-  while(it < settings.max_iterations)
+  // make progress. True when the attempt is over.
+  bool sqp_phase()
   {
-    constraints.evaluate(X, variable, n, c, &J);
-    const Eigen::VectorXd Hd = objective.gradient(X);
-    Matrix K = H + b * Matrix(J.transpose() * J);
-    if(exact_hessian)
-      K += constraints.lagrangian_hessian(X, variable, n, lambda);
-    shift = shift == 0 ? 0 : (std::max)(shift / 3, 1e-8);
-    while(!solver.factorize(Matrix(K + shift * identity)) && shift < 1e8)
-      shift = shift == 0 ? 1e-4 : 10 * shift;
-    if(!solver.positive_definite() || shift >= 1e8)
-      break;
-    // Progress: the optimality error (stationarity at the current
-    // multipliers) with the exact Hessian, else the largest residual.
-    const double residual = c.cwiseAbs().maxCoeff() / ell;
-    const double error =
-      exact_hessian ? (std::max)(residual, (Hd + J.transpose() * lambda).cwiseAbs().maxCoeff()) : residual;
-    if(error < 0.9 * best_error)
+    const Matrix& H = m_objective.hessian();
+    const double b = kkt_regularization();
+    double nu = 0, radius = T::initial_radius, shift = 0, best_error = std::numeric_limits<double>::infinity();
+    int iterations_since_best = 0;
+    Eigen::VectorXd lambda = Eigen::VectorXd::Zero(m_c.size());
+    while(m_it < m_settings.max_iterations)
     {
-      best_error = error;
-      iterations_since_best = 0;
+      m_constraints.evaluate(m_X, m_variable, m_n, m_c, &m_J);
+      const Eigen::VectorXd Hd = m_objective.gradient(m_X);
+      Matrix K = H + b * Matrix(m_J.transpose() * m_J);
+      if(m_exact_hessian)
+        K += m_constraints.lagrangian_hessian(m_X, m_variable, m_n, lambda);
+      if(!factorize_shifted(K, shift))
+        break;
+      // Progress: the optimality error (stationarity at the current
+      // multipliers) with the exact Hessian, else the largest residual.
+      const double residual = m_c.cwiseAbs().maxCoeff() / m_ell;
+      const double error = m_exact_hessian
+                         ? (std::max)(residual, (Hd + m_J.transpose() * lambda).cwiseAbs().maxCoeff())
+                         : residual;
+      if(error < T::progress * best_error)
+      {
+        best_error = error;
+        iterations_since_best = 0;
+      }
+      else if(++iterations_since_best >= (m_exact_hessian ? T::exact_hessian_patience : T::gauss_newton_patience))
+        break;
+      // With the exact Hessian, inexact multiplier passes warm-started from the
+      // previous multipliers, with a relative accuracy that tightens as |c|
+      // falls, keep the local convergence quadratic. Gauss-Newton converges
+      // linearly anyway; there, passes from zero at a fixed accuracy measured
+      // as good or better (decocube K = 15: 10 iterations instead of 44).
+      const double eta = m_exact_hessian ? (std::min)(T::multiplier_accuracy, residual) : T::multiplier_accuracy;
+      Eigen::VectorXd lambda_trial = m_exact_hessian ? lambda : Eigen::VectorXd::Zero(m_c.size());
+      m_delta = kkt_step(Hd, m_c, lambda_trial, eta);
+      nu = (std::max)(nu, 2 * lambda_trial.norm());
+      const Step step = line_search(Hd, nu, radius, eta);
+      if(!step.accepted) // the merit refuses the step: leave it to the projection
+        break;
+      if(step.alpha == step.alpha_max)
+        radius *= 2;
+      else if(m_variant == CAUTIOUS_GAUSS_NEWTON || m_variant == EXACT_HESSIAN || step.alpha < 0.5 * step.alpha_max)
+        radius = (std::max)(0.5 * radius, T::min_radius);
+      // Multipliers of the full step; those of a shortened step are blended.
+      lambda += (std::min)(step.alpha, 1.0) * (lambda_trial - lambda);
+      const double step_length = largest_move(step.d - m_d);
+      m_d = step.d;
+      m_X = positions(m_d);
+      m_c = m_c_trial;
+      if(!record())
+        return true;
+      if(congruent() && step_length <= m_settings.convergence_tolerance * m_ell)
+        return true;
     }
-    else if(++iterations_since_best >= (exact_hessian ? 10 : 5))
-      break;
-    // With the exact Hessian, inexact multiplier passes warm-started from the
-    // previous multipliers, with a relative accuracy that tightens as |c|
-    // falls, keep the local convergence quadratic. Gauss-Newton converges
-    // linearly anyway; there, passes from zero at a fixed accuracy measured
-    // as good or better (decocube K = 15: 10 iterations instead of 44).
-    const double eta = exact_hessian ? (std::min)(1e-3, residual) : 1e-3;
-    Eigen::VectorXd lambda_trial = exact_hessian ? lambda : Eigen::VectorXd::Zero(c.size());
-    delta = kkt_step(Hd, c, lambda_trial, eta);
-    // Line search on the l2 merit f + nu |c|, nu above |lambda|.
-    nu = (std::max)(nu, 2 * lambda_trial.norm());
-    const double merit_now = objective.value(X) + nu * c.norm();
-    const double slope = (std::min)(delta.dot(Hd) - nu * c.norm(), 0.0);
+    return false;
+  }
+
+  struct Step
+  {
+    Eigen::VectorXd d;
+    double alpha, alpha_max;
+    bool accepted;
+  };
+
+  // Backtracking along m_delta on the l2 merit f + nu |c| (nu above
+  // |lambda|), within the trust region on the largest vertex move, in edge
+  // lengths: far from a solution the linearization is poor and a full step
+  // can fold the mesh. Leaves the constraints at the step's end in m_c_trial.
+  Step line_search(const Eigen::VectorXd& Hd, double nu, double radius, double eta)
+  {
+    const double merit_now = m_objective.value(m_X) + nu * m_c.norm();
+    const double slope = (std::min)(m_delta.dot(Hd) - nu * m_c.norm(), 0.0);
     auto acceptable = [&](const Eigen::VectorXd& dd, double alpha) {
       const Point_matrix Y = positions(dd);
-      constraints.evaluate(Y, variable, n, c_trial, nullptr);
-      return objective.value(Y) + nu * c_trial.norm() <= merit_now + 1e-4 * alpha * slope;
+      m_constraints.evaluate(Y, m_variable, m_n, m_c_trial, nullptr);
+      return m_objective.value(Y) + nu * m_c_trial.norm() <= merit_now + T::armijo * alpha * slope;
     };
-    // Trust region on the largest vertex move, in edge lengths: far from a
-    // solution the linearization is poor and a full step can fold the mesh.
-    // It doubles after a step the line search accepts at once, halves
-    // otherwise (see Sqp_variant).
-    const double alpha_max = (std::min)(1.0, radius * ell / largest_move(delta));
-    double alpha = alpha_max;
-    Eigen::VectorXd d_trial = d + alpha * delta;
-    bool accepted = acceptable(d_trial, alpha);
-    if(!accepted && alpha == 1.0 && exact_hessian)
+    Step step;
+    step.alpha_max = (std::min)(1.0, radius * m_ell / largest_move(m_delta));
+    step.alpha = step.alpha_max;
+    step.d = m_d + step.alpha * m_delta;
+    step.accepted = acceptable(step.d, step.alpha);
+    if(!step.accepted && step.alpha == 1.0 && m_exact_hessian)
     {
       // Second-order correction against the Maratos effect: the full step
       // plus the least-W-norm move back onto the constraints' linearization
       // at its end point. Only with the exact Hessian: with Gauss-Newton it
       // measured no gain.
-      Eigen::VectorXd correction_multipliers = Eigen::VectorXd::Zero(c.size());
+      Eigen::VectorXd correction_multipliers = Eigen::VectorXd::Zero(m_c.size());
       const Eigen::VectorXd correction =
-        kkt_step(Eigen::VectorXd::Zero(n), c_trial, correction_multipliers, eta);
-      d_trial = d + delta + correction;
-      accepted = acceptable(d_trial, alpha);
+        kkt_step(Eigen::VectorXd::Zero(m_n), m_c_trial, correction_multipliers, eta);
+      step.d = m_d + m_delta + correction;
+      step.accepted = acceptable(step.d, step.alpha);
     }
-    for(alpha *= 0.5; !accepted && alpha >= 1e-6; alpha *= 0.5)
+    for(step.alpha *= 0.5; !step.accepted && step.alpha >= T::min_step_fraction; step.alpha *= 0.5)
     {
-      d_trial = d + alpha * delta;
-      accepted = acceptable(d_trial, alpha);
+      step.d = m_d + step.alpha * m_delta;
+      step.accepted = acceptable(step.d, step.alpha);
     }
-    if(!accepted) // the merit refuses the step: leave it to the projection
-      break;
-    if(alpha == alpha_max)
-      radius *= 2;
-    else if(variant == CAUTIOUS_GAUSS_NEWTON || variant == EXACT_HESSIAN || alpha < 0.5 * alpha_max)
-      radius = (std::max)(0.5 * radius, 1e-3);
-    // Multipliers of the full step; those of a shortened step are blended.
-    lambda += (std::min)(alpha, 1.0) * (lambda_trial - lambda);
-    const double step_length = largest_move(d_trial - d);
-    d = d_trial;
-    X = positions(d);
-    c = c_trial;
-    if(!record())
-      return report;
-    if(congruent() && step_length <= settings.convergence_tolerance * ell)
-      return report;
+    return step;
   }
 
   // Phase 2: Levenberg-Marquardt projection onto c = 0, mu = theta |c|_inf / ell,
   // theta adapted by the ratio of actual to predicted decrease of |c|^2.
-  const Congruence_constraints projection(in.problem, ell, VOLUME_SHAPE);
-  projection.evaluate(X, variable, n, c, nullptr);
-  double theta = 1, best_residual = c.cwiseAbs().maxCoeff();
-  iterations_since_best = 0;
-  while(it < settings.max_iterations && theta < 1e12)
+  // True when the visitor stopped the attempt.
+  bool projection_phase()
   {
-    projection.evaluate(X, variable, n, c, &J);
-    // The floor bounds the conditioning, so that round-off is not amplified.
-    const double mu = (std::max)(theta * c.cwiseAbs().maxCoeff() / ell, 1e-8);
-    if(!solver.factorize(Matrix(Matrix(J.transpose() * J) + mu * objective.isotropic_hessian())))
-    { // mu too small for round-off: damp more
-      theta *= 4;
-      continue;
-    }
-    delta = solver.solve(-(J.transpose() * c));
-    const Eigen::VectorXd d_trial = d + delta;
-    const Point_matrix X_trial = positions(d_trial);
-    projection.evaluate(X_trial, variable, n, c_trial, nullptr);
-    const double predicted = c.squaredNorm() - (c + J * delta).squaredNorm();
-    const double rho = (c.squaredNorm() - c_trial.squaredNorm()) / predicted;
-    if(!(predicted > 0 && rho > 1e-4))
+    const Congruence_constraints projection(m_in.problem, m_ell, VOLUME_SHAPE);
+    projection.evaluate(m_X, m_variable, m_n, m_c, nullptr);
+    double theta = 1, best_residual = m_c.cwiseAbs().maxCoeff();
+    int iterations_since_best = 0;
+    while(m_it < m_settings.max_iterations && theta < T::max_theta)
     {
-      theta *= 4;
-      continue;
+      projection.evaluate(m_X, m_variable, m_n, m_c, &m_J);
+      const double mu = (std::max)(theta * m_c.cwiseAbs().maxCoeff() / m_ell, T::min_damping);
+      if(!m_solver.factorize(Matrix(Matrix(m_J.transpose() * m_J) + mu * m_objective.isotropic_hessian())))
+      { // mu too small for round-off: damp more
+        theta *= T::damping_factor;
+        continue;
+      }
+      m_delta = m_solver.solve(-(m_J.transpose() * m_c));
+      const Eigen::VectorXd d_trial = m_d + m_delta;
+      const Point_matrix X_trial = positions(d_trial);
+      projection.evaluate(X_trial, m_variable, m_n, m_c_trial, nullptr);
+      const double predicted = m_c.squaredNorm() - (m_c + m_J * m_delta).squaredNorm();
+      const double rho = (m_c.squaredNorm() - m_c_trial.squaredNorm()) / predicted;
+      if(!(predicted > 0 && rho > T::min_gain_ratio))
+      {
+        theta *= T::damping_factor;
+        continue;
+      }
+      theta = rho > T::good_gain_ratio ? (std::max)(theta / T::damping_factor, T::min_damping)
+                                       : (rho < T::poor_gain_ratio ? T::damping_factor * theta : theta);
+      m_d = d_trial;
+      m_X = X_trial;
+      m_c = m_c_trial;
+      if(!record())
+        return true;
+      const double residual = m_c.cwiseAbs().maxCoeff();
+      // Once congruent, a few more cheap quadratic steps reach round-off.
+      if(congruent() && (residual <= T::round_off_residual * m_tolerance * m_ell ||
+                         largest_move(m_delta) <= m_settings.convergence_tolerance * m_ell))
+        break;
+      if(residual < T::progress * best_residual)
+      {
+        best_residual = residual;
+        iterations_since_best = 0;
+      }
+      else if(++iterations_since_best >= T::projection_patience)
+        break;
     }
-    theta = rho > 0.75 ? (std::max)(theta / 4, 1e-8) : (rho < 0.25 ? 4 * theta : theta);
-    d = d_trial;
-    X = X_trial;
-    c = c_trial;
-    if(!record())
-      return report;
-    const double residual = c.cwiseAbs().maxCoeff();
-    // Once congruent, a few more cheap quadratic steps reach round-off.
-    if(congruent() && (residual <= 1e-3 * tolerance * ell ||
-                       largest_move(delta) <= settings.convergence_tolerance * ell))
-      break;
-    if(residual < 0.9 * best_residual)
-    {
-      best_residual = residual;
-      iterations_since_best = 0;
-    }
-    else if(++iterations_since_best >= 10)
-      break;
+    return false;
   }
-  if(!measured)
-    report.congruence_error = congruence_error(in.problem, X);
-  return report;
-}
+
+  const Solver_input& m_in;
+  const Solver_settings& m_settings;
+  const Sqp_variant m_variant;
+  const bool m_exact_hessian;
+  std::vector<int> m_variable;
+  const int m_n;
+  const double m_ell, m_tolerance;
+  const Congruence_constraints m_constraints;
+  const std::vector<Eigen::Matrix3d> m_isotropic;
+  const Closeness_objective m_objective;
+  Point_matrix& m_X;
+  Visitor& m_visitor;
+  bool& m_stopped;
+  int m_it;
+  bool m_measured = false;
+  Solver_report m_report;
+  SPD_solver m_solver;
+  Matrix m_J;
+  Eigen::VectorXd m_d, m_c, m_c_trial, m_delta;
+};
 
 // Each variant in turn from the input while the previous ones end short of
 // the tolerance, within the remaining iterations. They reach different local
-// solutions of the over-determined problem (method notes §4b) and none always
+// solutions of the over-determined problem (user manual, section
+// Optimization) and none always
 // succeeds; the best result is kept.
 template <typename Visitor>
 Solver_report constrained_gauss_newton(const Solver_input& in, const Solver_settings& settings,
                                        Point_matrix& X, Visitor& visitor)
 {
   bool stopped = false;
-  Solver_report report = constrained_gauss_newton_attempt(in, settings, GAUSS_NEWTON, 0, X, visitor, stopped);
+  Solver_report report = Sqp_attempt<Visitor>(in, settings, GAUSS_NEWTON, 0, X, visitor, stopped).run();
   for(Sqp_variant variant : {ISOTROPIC_GAUSS_NEWTON, CAUTIOUS_GAUSS_NEWTON, EXACT_HESSIAN})
   {
     if(stopped || report.congruence_error <= settings.congruence_tolerance ||
@@ -334,7 +421,7 @@ Solver_report constrained_gauss_newton(const Solver_input& in, const Solver_sett
       break;
     Point_matrix Y;
     const Solver_report other =
-      constrained_gauss_newton_attempt(in, settings, variant, report.iterations, Y, visitor, stopped);
+      Sqp_attempt<Visitor>(in, settings, variant, report.iterations, Y, visitor, stopped).run();
     const int iterations = (std::max)(report.iterations, other.iterations);
     if(other.congruence_error < report.congruence_error)
     {

@@ -13,9 +13,10 @@
 // paper sums (q_i - q_{i+1 mod n})^2 cyclically over each group; the
 // constraints are the n - 1 differences q_i - q_{i+1}, i < n - 1, which
 // state the same equalities without an auxiliary target variable (so no
-// dense row or column, method notes §4b).
+// dense row or column: user manual, section Optimization).
 
-#include <CGAL/Tilable_surfaces/internal/Optimization/Tilable_problem.h>
+#include <CGAL/Tilable_surfaces/Energy_terms.h>
+#include <CGAL/Tilable_surfaces/internal/Tilable_problem.h>
 
 #include <Eigen/Core>
 #include <Eigen/Sparse>
@@ -92,31 +93,6 @@ inline double cyclic_equality_energy(Quantity_kind kind, const Equality_groups& 
   }
   return energy;
 }
-
-} // namespace internal
-
-/// \ingroup PkgTilableSurfacesRef
-/// Values of the five terms of the paper's energy (§4): F_d (distance to the
-/// input positions), F_f (fairness), F_e (edge lengths), F_a (diagonals) and
-/// F_o (signed volumes); or their weights mu1..mu5.
-struct Energy_terms
-{
-  double distance = 0;    ///< F_d, or mu1
-  double fairness = 0;    ///< F_f, or mu2
-  double edge_length = 0; ///< F_e, or mu3
-  double diagonal = 0;    ///< F_a, or mu4
-  double volume = 0;      ///< F_o, or mu5
-
-  /// The weighted sum sum_k weights_k * F_k.
-  double weighted_sum(const Energy_terms& weights) const
-  {
-    return weights.distance * distance + weights.fairness * fairness +
-           weights.edge_length * edge_length + weights.diagonal * diagonal +
-           weights.volume * volume;
-  }
-};
-
-namespace internal {
 
 // F_d = |X - X0|^2, F_f = |D X|^2 and the three cyclic sums; with `gradient`,
 // also the gradient of the weighted sum (overwritten).

@@ -8,7 +8,7 @@
 // leaves alone (paper §4: "vertices that are not on sharp features, such as
 // corners and crest lines").
 
-#include <CGAL/Tilable_surfaces/internal/Optimization/Tilable_problem.h>
+#include <CGAL/Tilable_surfaces/internal/Tilable_problem.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>

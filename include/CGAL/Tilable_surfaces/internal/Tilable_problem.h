@@ -1,13 +1,14 @@
 // Copyright (c) 2026 Tilable_surfaces contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-#ifndef CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_TILABLE_PROBLEM_H
-#define CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_TILABLE_PROBLEM_H
+#ifndef CGAL_TILABLE_SURFACES_INTERNAL_TILABLE_PROBLEM_H
+#define CGAL_TILABLE_SURFACES_INTERNAL_TILABLE_PROBLEM_H
 
 // The mesh and its clustering turned into plain arrays indexed by vertex
 // index: the solvers and the measurements work on these, never on the mesh.
 
 #include <CGAL/Tilable_surfaces/Edge_sharing_graph.h>
+#include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/exceptions.h>
 #include <CGAL/Tilable_surfaces/named_parameters.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
@@ -101,12 +102,8 @@ template <typename PolygonMesh, typename NamedParameters>
 Tilable_problem make_tilable_problem(const PolygonMesh& pm, const NamedParameters& np)
 {
   using parameters::get_parameter;
-  using parameters::is_default_parameter;
   namespace TS_np = CGAL::Tilable_surfaces::internal_np;
-  static_assert(!is_default_parameter<NamedParameters, TS_np::face_cluster_t>::value,
-                "the named parameter face_cluster_map is required");
-  static_assert(!is_default_parameter<NamedParameters, TS_np::face_orientation_t>::value,
-                "the named parameter face_orientation_map is required");
+  require_face_maps<NamedParameters>();
   const auto cluster_map = get_parameter(np, TS_np::face_cluster);
   const auto orientation_map = get_parameter(np, TS_np::face_orientation);
   const auto vpm = parameters::choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
@@ -115,7 +112,7 @@ Tilable_problem make_tilable_problem(const PolygonMesh& pm, const NamedParameter
 
   Tilable_problem problem;
   problem.allow_mirror = parameters::choose_parameter(get_parameter(np, TS_np::orientation_policy),
-                                                      PROPER_RIGID_MOTIONS) == ALLOW_MIRRORED_PANELS;
+                                                      defaults::orientation_policy) == ALLOW_MIRRORED_PANELS;
   problem.planar = parameters::choose_parameter(get_parameter(np, TS_np::planar_tiles), false);
   long long largest = -1;
   for(auto f : faces(pm))
@@ -193,4 +190,4 @@ inline double mean_edge_length(const Tilable_problem& problem, const Point_matri
 } // namespace Tilable_surfaces
 } // namespace CGAL
 
-#endif // CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_TILABLE_PROBLEM_H
+#endif // CGAL_TILABLE_SURFACES_INTERNAL_TILABLE_PROBLEM_H

@@ -1,0 +1,75 @@
+// Copyright (c) 2026 Tilable_surfaces contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TILABLE_SURFACES_VISITOR_H
+#define CGAL_TILABLE_SURFACES_VISITOR_H
+
+/// \file visitor.h
+/// The package's visitor: one object follows (and may stop) every stage of a
+/// call.
+
+#include <CGAL/Tilable_surfaces/named_parameters.h>
+
+#include <functional>
+
+namespace CGAL {
+namespace Tilable_surfaces {
+
+/// \ingroup PkgTilableSurfacesRef
+/// The visitor of the package, and the model that does nothing: derive from
+/// it and override what you need, then pass it with the named parameter
+/// `visitor`. Given by value it is copied once, by the function called;
+/// given as `std::ref(v)` it is `v` itself. Either way every stage of that
+/// call (clustering, each optimization, the fidelity search, the deviation
+/// search) calls that one object.
+struct Default_visitor
+{
+  /// Called after iteration `iteration` (from 1) of a solver with the
+  /// congruence error (user manual, section Definitions) and the solver's
+  /// objective (on the normalized input). Returning `false` stops the solver,
+  /// and the search around it. The default solver measures the congruence
+  /// error only when it may meet the tolerance and every 10 iterations; in
+  /// between it passes its estimate, the largest constraint residual in mean
+  /// edge lengths. `Optimization_result::converged` is always decided on the
+  /// measured value.
+  bool iteration(int /*iteration*/, double /*congruence_error*/, double /*objective*/)
+  {
+    return true;
+  }
+
+  /// Called when a phase ends, with its duration in seconds:
+  /// `cluster_quads()`: "threshold clustering", "merges", "other candidates",
+  /// "orientations";
+  /// `K_set_tilable_surface::optimize_closest()`: "displacement prediction",
+  /// "candidate optimization", "improvement round";
+  /// `make_k_set_tilable()` and `k_set_tilable_curve()`: "validation",
+  /// "clustering", "optimization".
+  void phase(const char* /*name*/, double /*seconds*/) {}
+};
+
+namespace internal {
+
+// The visitor of `np`: the user's object if given as std::ref, else a copy of
+// it, or a Default_visitor.
+template <typename NamedParameters>
+decltype(auto) visitor_of(const NamedParameters& np)
+{
+  if constexpr(parameters::is_default_parameter<NamedParameters, CGAL::internal_np::visitor_t>::value)
+    return Default_visitor();
+  else
+    return parameters::get_parameter_reference(np, CGAL::internal_np::visitor);
+}
+
+// `np` with `visitor` passed on by reference, for the stages below a call.
+template <typename NamedParameters, typename Visitor>
+auto with_visitor(const NamedParameters& np, Visitor& visitor)
+{
+  return parameters::extend(np).visitor(std::ref(visitor));
+}
+
+} // namespace internal
+
+} // namespace Tilable_surfaces
+} // namespace CGAL
+
+#endif // CGAL_TILABLE_SURFACES_VISITOR_H

@@ -69,11 +69,24 @@ TEST(Defaults, TheUserManualStatesTheDefaultsOfDefaultsH)
     {"volume_weight", TS::defaults::volume_weight},
     {"congruence_tolerance", TS::defaults::congruence_tolerance},
     {"number_of_improvement_rounds", double(TS::defaults::number_of_improvement_rounds)},
-    {"feature_angle", TS::defaults::feature_angle}};
+    {"feature_angle", TS::defaults::feature_angle},
+    {"stream_precision", double(TS::defaults::stream_precision)}};
   for(const auto& [name, value] : scalars)
   {
     ASSERT_EQ(doc.count(name), 1u) << name << " is not in the manual's table";
     EXPECT_EQ(numbers_in(doc.at(name)), std::vector<double>{value}) << name << ": " << doc.at(name);
+  }
+  const std::map<std::string, bool> switches = {
+    {"use_kmeans_candidate", TS::defaults::use_kmeans_candidate},
+    {"use_auto_merge", TS::defaults::use_auto_merge},
+    {"use_strip_candidates", TS::defaults::use_strip_candidates},
+    {"use_segment_candidates", TS::defaults::use_segment_candidates},
+    {"planar_tiles", TS::defaults::planar_tiles},
+    {"use_binary_mode", TS::defaults::use_binary_mode}};
+  for(const auto& [name, value] : switches)
+  {
+    ASSERT_EQ(doc.count(name), 1u) << name << " is not in the manual's table";
+    EXPECT_EQ(doc.at(name), value ? "`true`" : "`false`") << name;
   }
   const std::map<std::string, std::string> enumerations = {
     {"clustering_path", "`AUTOMATIC_PATH`"},
@@ -126,6 +139,11 @@ TEST(Defaults, ThePipelineUsesThem)
   const TS::Solver_type solver = TS::defaults::solver;
   const Run spelled_out = run(TSP::number_of_tiles(k)
                                 .number_of_candidates(TS::defaults::number_of_candidates)
+                                .use_kmeans_candidate(TS::defaults::use_kmeans_candidate)
+                                .use_auto_merge(TS::defaults::use_auto_merge)
+                                .use_strip_candidates(TS::defaults::use_strip_candidates)
+                                .use_segment_candidates(TS::defaults::use_segment_candidates)
+                                .planar_tiles(TS::defaults::planar_tiles)
                                 .similarity_threshold(TS::defaults::similarity_threshold)
                                 .flexibility_penalty(TS::defaults::flexibility_penalty)
                                 .structure_penalty(TS::defaults::structure_penalty)

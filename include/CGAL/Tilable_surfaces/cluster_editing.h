@@ -181,7 +181,7 @@ std::size_t split_cluster(const PolygonMesh& pm, std::size_t c, const CGAL_NP_CL
                         Invalid_input::PARAMETER);
   const Orientation_policy policy = internal::orientation_policy(np);
   CGAL::Random random(parameters::choose_parameter(
-    parameters::get_parameter(np, CGAL::internal_np::random_seed), 0u));
+    parameters::get_parameter(np, CGAL::internal_np::random_seed), defaults::random_seed));
   std::vector<Quad_descriptor> descriptors(e.quads.size());
   for(std::size_t f : members[c]) descriptors[f] = shape_descriptor(e.quads[f]);
 

@@ -171,10 +171,10 @@ Clustering_settings clustering_settings(const NP& np)
     choose_parameter(get_parameter(np, TS_np::similarity_threshold), defaults::similarity_threshold);
   s.lambda = choose_parameter(get_parameter(np, TS_np::flexibility_penalty), defaults::flexibility_penalty);
   s.mu = choose_parameter(get_parameter(np, TS_np::structure_penalty), defaults::structure_penalty);
-  s.use_kmeans = choose_parameter(get_parameter(np, TS_np::use_kmeans_candidate), true);
-  s.auto_merge = choose_parameter(get_parameter(np, TS_np::use_auto_merge), true);
-  s.use_strips = choose_parameter(get_parameter(np, TS_np::use_strip_candidates), true);
-  s.use_segments = choose_parameter(get_parameter(np, TS_np::use_segment_candidates), true);
+  s.use_kmeans = choose_parameter(get_parameter(np, TS_np::use_kmeans_candidate), defaults::use_kmeans_candidate);
+  s.auto_merge = choose_parameter(get_parameter(np, TS_np::use_auto_merge), defaults::use_auto_merge);
+  s.use_strips = choose_parameter(get_parameter(np, TS_np::use_strip_candidates), defaults::use_strip_candidates);
+  s.use_segments = choose_parameter(get_parameter(np, TS_np::use_segment_candidates), defaults::use_segment_candidates);
   s.path = choose_parameter(get_parameter(np, TS_np::clustering_path), defaults::clustering_path);
   s.exact_limit =
     choose_parameter(get_parameter(np, TS_np::exact_clustering_limit), defaults::exact_clustering_limit);

@@ -82,6 +82,10 @@ constexpr double similarity_threshold = 0.01;
 constexpr double flexibility_penalty = 0.5;
 /// `structure_penalty`.
 constexpr double structure_penalty = 1.0;
+/// `use_kmeans_candidate`, `use_auto_merge`, `use_strip_candidates`,
+/// `use_segment_candidates`: every kind of candidate clustering.
+constexpr bool use_kmeans_candidate = true, use_auto_merge = true;
+constexpr bool use_strip_candidates = true, use_segment_candidates = true;
 /// `exact_clustering_limit`: the paper's largest mesh.
 constexpr std::size_t exact_clustering_limit = 1500;
 /// `clustering_path`.
@@ -105,10 +109,16 @@ constexpr double diagonal_weight = 1.0;
 constexpr double volume_weight = 1.0;
 /// `congruence_tolerance`: fabrication grade is 1e-4.
 constexpr double congruence_tolerance = 1e-6;
+/// `planar_tiles`.
+constexpr bool planar_tiles = false;
 /// `number_of_improvement_rounds`.
 constexpr int number_of_improvement_rounds = 2;
 /// `feature_angle`, in degrees.
 constexpr double feature_angle = 60.0;
+/// `use_binary_mode` of the PLY writers.
+constexpr bool use_binary_mode = true;
+/// `stream_precision` of the PLY writers: every double exactly.
+constexpr int stream_precision = 17;
 } // namespace defaults
 
 /// \ingroup PkgTilableSurfacesRef

@@ -9,6 +9,7 @@
 /// orientation and a colour per cluster.
 
 #include <CGAL/Tilable_surfaces/IO/cluster_colors.h>
+#include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/named_parameters.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 #include <CGAL/Tilable_surfaces/validation.h>
@@ -58,8 +59,8 @@ bool write_tiled_PLY(std::ostream& os, const PolygonMesh& pm,
 
   const auto clusters = get_parameter(np, internal_np::face_cluster);
   const auto orientations = get_parameter(np, internal_np::face_orientation);
-  const bool binary = choose_parameter(get_parameter(np, CGAL::internal_np::use_binary_mode), true);
-  const int precision = choose_parameter(get_parameter(np, CGAL::internal_np::stream_precision), 17);
+  const bool binary = choose_parameter(get_parameter(np, CGAL::internal_np::use_binary_mode), defaults::use_binary_mode);
+  const int precision = choose_parameter(get_parameter(np, CGAL::internal_np::stream_precision), defaults::stream_precision);
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_const_property_map(CGAL::vertex_point, pm));
 

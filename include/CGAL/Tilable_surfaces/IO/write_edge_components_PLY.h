@@ -9,6 +9,7 @@
 /// edges of one component get one colour.
 
 #include <CGAL/Tilable_surfaces/IO/cluster_colors.h>
+#include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/named_parameters.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 #include <CGAL/Tilable_surfaces/validation.h>
@@ -54,7 +55,7 @@ bool write_edge_components_PLY(std::ostream& os, const PolygonMesh& pm,
   typedef Output_mesh::Point Point;
   const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                     get_const_property_map(CGAL::vertex_point, pm));
-  const bool binary = choose_parameter(get_parameter(np, CGAL::internal_np::use_binary_mode), true);
+  const bool binary = choose_parameter(get_parameter(np, CGAL::internal_np::use_binary_mode), defaults::use_binary_mode);
   validate_quad_mesh(pm, np);
 
   std::size_t number_of_components = 0;

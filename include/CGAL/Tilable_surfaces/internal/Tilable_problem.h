@@ -113,7 +113,7 @@ Tilable_problem make_tilable_problem(const PolygonMesh& pm, const NamedParameter
   Tilable_problem problem;
   problem.allow_mirror = parameters::choose_parameter(get_parameter(np, TS_np::orientation_policy),
                                                       defaults::orientation_policy) == ALLOW_MIRRORED_PANELS;
-  problem.planar = parameters::choose_parameter(get_parameter(np, TS_np::planar_tiles), false);
+  problem.planar = parameters::choose_parameter(get_parameter(np, TS_np::planar_tiles), defaults::planar_tiles);
   long long largest = -1;
   for(auto f : faces(pm))
     largest = (std::max)(largest, static_cast<long long>(get(cluster_map, f)));

@@ -168,11 +168,16 @@ TEST(KSetTilableSurface, MapsHandedOutStayValid)
     EXPECT_EQ(get(cluster, f), int(f.idx() % 2));
     EXPECT_EQ(get(orientation, f), 0);
   }
+  const Mesh input = mesh;
   surface.cluster(TSP::number_of_tiles(5));
   surface.optimize_closest(TSP::number_of_optimized_candidates(2).number_of_improvement_rounds(1));
   const auto fresh = surface.face_cluster_map();
   for(auto f : faces(mesh))
     EXPECT_EQ(get(cluster, f), get(fresh, f));
+  // The mesh moved; the input positions did not.
+  EXPECT_GT(surface.optimization().measure.max_displacement, 0.0);
+  for(auto v : vertices(mesh))
+    EXPECT_EQ(get(surface.input_point_map(), v), input.point(v));
 }
 
 // The edits use the similarity threshold and orientation policy that

@@ -11,6 +11,7 @@
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 #include <CGAL/Tilable_surfaces/validation.h>
 
+#include <array>
 #include <cassert>
 #include <cmath>
 #include <iostream>
@@ -48,6 +49,16 @@ void check_unit_grid()
   const TS::Quad r = TS::face_quad(f0, mesh, TS::Quad_orientation(4));
   assert(r[1] == Eigen::Vector3d(0, 1, 0));
   assert(r[3] == Eigen::Vector3d(1, 0, 0));
+  // Face edge j goes from face vertex j to j + 1: (v0,v1), (v1,v4), (v4,v3),
+  // (v3,v0); only edge 1 is shared, with the second face.
+  const std::array<std::size_t, 5> corner{{0, 1, 4, 3, 0}};
+  const auto face_edges = TS::face_edge_halfedges(f0, mesh);
+  for(std::size_t j = 0; j < 4; ++j)
+  {
+    assert(source(face_edges[j], mesh) == v[corner[j]]);
+    assert(target(face_edges[j], mesh) == v[corner[j + 1]]);
+    assert(is_border(opposite(face_edges[j], mesh), mesh) == (j != 1));
+  }
   // Both faces are unit squares: congruent.
   for(auto f : faces(mesh))
     assert(TS::dissimilarity(TS::face_quad(f0, mesh), TS::face_quad(f, mesh)) < 1e-14);

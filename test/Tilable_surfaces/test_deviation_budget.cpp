@@ -12,6 +12,8 @@
 #include "csv_cells.h"
 #include "grid_mesh.h"
 
+#include "test_mesh.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -21,10 +23,6 @@
 #include <string>
 #include <vector>
 
-namespace TS = CGAL::Tilable_surfaces;
-namespace TSP = CGAL::Tilable_surfaces::parameters;
-typedef CGAL::Simple_cartesian<double>::Point_3 Point;
-typedef CGAL::Surface_mesh<Point> Mesh;
 
 namespace {
 

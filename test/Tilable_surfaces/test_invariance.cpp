@@ -8,6 +8,8 @@
 
 #include <CGAL/Tilable_surfaces/make_k_set_tilable.h>
 
+#include "test_mesh.h"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
@@ -19,19 +21,8 @@
 #include <string>
 #include <vector>
 
-namespace TS = CGAL::Tilable_surfaces;
-namespace TSP = CGAL::Tilable_surfaces::parameters;
-typedef CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> Mesh;
-typedef Mesh::Point Point;
 
 namespace {
-
-Mesh read(const std::string& name)
-{
-  Mesh mesh;
-  EXPECT_TRUE(CGAL::IO::read_polygon_mesh(std::string(CGAL_TILABLE_SURFACES_TEST_DATA) + "/" + name, mesh));
-  return mesh;
-}
 
 struct Tiling
 {

@@ -10,6 +10,8 @@
 #include <CGAL/Tilable_surfaces/IO/write_PLY.h>
 #include <CGAL/Tilable_surfaces/IO/write_edge_components_PLY.h>
 
+#include "test_mesh.h"
+
 #include <gtest/gtest.h>
 
 #include <array>
@@ -18,10 +20,6 @@
 #include <sstream>
 #include <string>
 
-namespace TS = CGAL::Tilable_surfaces;
-namespace TSP = CGAL::Tilable_surfaces::parameters;
-typedef CGAL::Simple_cartesian<double> K;
-typedef CGAL::Surface_mesh<K::Point_3> Mesh;
 
 namespace {
 
@@ -111,7 +109,7 @@ TEST(WriteTiledPLY, BinaryAndAsciiReadBackIdentically)
 
 TEST(WriteTiledPLY, WorksForAnotherMeshType)
 {
-  typedef CGAL::Polyhedron_3<K, CGAL::Polyhedron_items_with_id_3> Polyhedron;
+  typedef CGAL::Polyhedron_3<Kernel, CGAL::Polyhedron_items_with_id_3> Polyhedron;
   Polyhedron poly;
   ASSERT_TRUE(CGAL::IO::read_polygon_mesh(std::string(CGAL_TILABLE_SURFACES_TEST_DATA) +
                                           "/monkey_saddle.off", poly));

@@ -7,6 +7,8 @@
 
 #include "congruence_check.h"
 
+#include "test_mesh.h"
+
 #include <gtest/gtest.h>
 
 #include <map>
@@ -14,18 +16,8 @@
 #include <string>
 #include <vector>
 
-namespace TS = CGAL::Tilable_surfaces;
-namespace TSP = CGAL::Tilable_surfaces::parameters;
-typedef CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> Mesh;
 
 namespace {
-
-Mesh read(const std::string& name)
-{
-  Mesh mesh;
-  EXPECT_TRUE(CGAL::IO::read_polygon_mesh(std::string(CGAL_TILABLE_SURFACES_TEST_DATA) + "/" + name, mesh));
-  return mesh;
-}
 
 std::vector<Mesh::Point> points(const Mesh& m)
 {
@@ -213,6 +205,132 @@ TEST(KSetTilableSurface, EditsKeepTheCallersParameters)
   EXPECT_EQ(dof, with_callers.first);
   EXPECT_EQ(retagged, with_callers.second);
   EXPECT_NE(retagged, with_defaults.second) << "the parameters make no difference on this mesh";
+}
+
+namespace {
+
+// The mesh's points, counting every read: what a step reads of the mesh.
+struct Counting_point_map
+{
+  typedef Mesh::Vertex_index key_type;
+  typedef Mesh::Point value_type;
+  typedef const Mesh::Point& reference;
+  typedef boost::read_write_property_map_tag category;
+
+  Mesh* mesh;
+  std::size_t* reads;
+
+  friend reference get(const Counting_point_map& m, key_type v)
+  {
+    ++*m.reads;
+    return m.mesh->point(v);
+  }
+  friend void put(const Counting_point_map& m, key_type v, const value_type& p) { m.mesh->point(v) = p; }
+};
+
+// The components of the graph, as a partition of the mesh edges.
+std::map<Mesh::Edge_index, std::size_t> edge_components(const Mesh& mesh, const TS::Edge_sharing_graph<Mesh>& g)
+{
+  std::map<Mesh::Edge_index, std::size_t> component;
+  for(auto e : edges(mesh)) component[e] = g.component(e);
+  return component;
+}
+
+} // namespace
+
+// The object checks the mesh once: its edits work on the state it keeps and
+// read no point of the mesh, where the free functions check the mesh first.
+TEST(KSetTilableSurface, EditsReuseTheStateInsteadOfRereadingTheMesh)
+{
+  Mesh mesh = read("monkey_saddle.off");
+  std::size_t reads = 0;
+  const Counting_point_map vpm{&mesh, &reads};
+  TS::K_set_tilable_surface<Mesh, Counting_point_map> surface(mesh, vpm);
+  EXPECT_GE(reads, num_vertices(mesh)) << "the constructor reads the input";
+  surface.cluster(TSP::number_of_tiles(6));
+
+  reads = 0;
+  surface.merge_clusters(0, 1);
+  surface.split_cluster(0);
+  surface.retag_orientations();
+  surface.degree_of_flexibility();
+  surface.clustering();
+  EXPECT_EQ(reads, 0u);
+
+  std::map<Mesh::Face_index, int> cluster, orientation;
+  for(auto f : faces(mesh))
+  {
+    cluster[f] = get(surface.face_cluster_map(), f);
+    orientation[f] = get(surface.face_orientation_map(), f);
+  }
+  TS::merge_clusters(mesh, 0, 1, TSP::vertex_point_map(vpm)
+                                   .face_cluster_map(boost::make_assoc_property_map(cluster))
+                                   .face_orientation_map(boost::make_assoc_property_map(orientation)));
+  EXPECT_GE(reads, num_vertices(mesh)) << "the free function checks the mesh";
+}
+
+// cluster() is its four stages in turn: run one by one, they build the same
+// pool and select the same clustering; out of order, they refuse.
+TEST(KSetTilableSurface, StagesOneByOneGiveWhatClusterGives)
+{
+  Mesh mesh = read("monkey_saddle.off");
+  const auto np = TSP::number_of_tiles(6).use_kmeans_candidate(true);
+  TS::K_set_tilable_surface<Mesh> whole(mesh), staged(mesh);
+  const TS::Clustering_result& expected = whole.cluster(np);
+
+  EXPECT_THROW(staged.merge_to_tile_count(), TS::Invalid_input);
+  const std::size_t initial = staged.initialize_clusters(np);
+  EXPECT_EQ(initial, expected.number_of_initial_clusters);
+  EXPECT_GE(initial, 6u);
+  EXPECT_TRUE(staged.clustering().candidates.empty());
+  const std::size_t merged = staged.merge_to_tile_count();
+  ASSERT_GT(merged, 0u);
+  for(const TS::Clustering_candidate& c : staged.clustering().candidates)
+    EXPECT_EQ(c.origin, TS::Clustering_candidate::HIERARCHICAL);
+  EXPECT_GT(staged.add_other_candidates(), merged) << "the k-means candidate was asked for";
+  const TS::Clustering_result& selected = staged.select_candidate();
+  EXPECT_THROW(staged.select_candidate(), TS::Invalid_input) << "the stages were used up";
+
+  ASSERT_EQ(selected.candidates.size(), expected.candidates.size());
+  for(std::size_t i = 0; i < expected.candidates.size(); ++i)
+    EXPECT_EQ(selected.candidates[i].face_cluster, expected.candidates[i].face_cluster);
+  EXPECT_EQ(selected.chosen_candidate, expected.chosen_candidate);
+  EXPECT_EQ(selected.degree_of_flexibility, expected.degree_of_flexibility);
+  for(auto f : faces(mesh))
+  {
+    EXPECT_EQ(get(staged.face_cluster_map(), f), get(whole.face_cluster_map(), f));
+    EXPECT_EQ(get(staged.face_orientation_map(), f), get(whole.face_orientation_map(), f));
+  }
+}
+
+// A merge amends the object's graph in place; it must be the graph of the
+// merged clustering all the same: the one built from scratch from the maps,
+// edge for edge, id for id, and clustering() must describe that clustering.
+TEST(KSetTilableSurface, MergedGraphAndDescriptionAreThoseOfTheMergedClustering)
+{
+  Mesh mesh = read("monkey_saddle.off");
+  TS::K_set_tilable_surface<Mesh> surface(mesh);
+  surface.cluster(TSP::number_of_tiles(8));
+  for(auto pair : {std::make_pair(std::size_t(2), std::size_t(5)), std::make_pair(std::size_t(6), std::size_t(0))})
+  {
+    const std::size_t dof = surface.merge_clusters(pair.first, pair.second);
+    const std::size_t k = surface.number_of_clusters();
+    const TS::Edge_sharing_graph<Mesh> rebuilt(mesh, k, surface.face_cluster_map(), surface.face_orientation_map());
+    const TS::Edge_sharing_graph<Mesh>& amended = surface.edge_sharing_graph();
+    EXPECT_EQ(dof, rebuilt.degree_of_flexibility());
+    EXPECT_EQ(amended.degree_of_flexibility(), rebuilt.degree_of_flexibility());
+    ASSERT_EQ(amended.number_of_clusters(), k);
+    for(std::size_t c = 0; c < k; ++c)
+      EXPECT_EQ(amended.cluster_pattern(c), rebuilt.cluster_pattern(c)) << "cluster " << c;
+    EXPECT_EQ(edge_components(mesh, amended), edge_components(mesh, rebuilt));
+
+    std::vector<std::size_t> sizes(k, 0);
+    for(auto f : faces(mesh)) ++sizes[std::size_t(get(surface.face_cluster_map(), f))];
+    EXPECT_EQ(surface.clustering().cluster_sizes, sizes);
+    EXPECT_EQ(surface.clustering().s_quads.size(), k);
+    EXPECT_EQ(surface.clustering().degree_of_flexibility, rebuilt.degree_of_flexibility());
+  }
+  EXPECT_EQ(surface.number_of_clusters(), 6u);
 }
 
 namespace {

@@ -10,15 +10,13 @@
 
 #include "congruence_check.h"
 
+#include "test_mesh.h"
+
 #include <gtest/gtest.h>
 
 #include <numeric>
 #include <string>
 
-namespace TS = CGAL::Tilable_surfaces;
-namespace TSP = CGAL::Tilable_surfaces::parameters;
-typedef CGAL::Simple_cartesian<double>::Point_3 Point;
-typedef CGAL::Surface_mesh<Point> Mesh;
 
 namespace {
 

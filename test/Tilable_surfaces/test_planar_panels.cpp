@@ -9,6 +9,8 @@
 
 #include "congruence_check.h"
 
+#include "test_mesh.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -17,19 +19,8 @@
 #include <string>
 #include <vector>
 
-namespace TS = CGAL::Tilable_surfaces;
-namespace TSP = CGAL::Tilable_surfaces::parameters;
-typedef CGAL::Simple_cartesian<double> Kernel;
-typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
 
 namespace {
-
-Mesh read(const std::string& name)
-{
-  Mesh mesh;
-  EXPECT_TRUE(CGAL::IO::read_polygon_mesh(std::string(CGAL_TILABLE_SURFACES_TEST_DATA) + "/" + name, mesh));
-  return mesh;
-}
 
 // The largest distance between the diagonals of a face, over the mean edge
 // length, with CGAL's kernel: the distance between the lines v0v2 and v1v3.

@@ -13,6 +13,7 @@
 #include <CGAL/Tilable_surfaces/named_parameters.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 #include <CGAL/Tilable_surfaces/validation.h>
+#include <CGAL/Tilable_surfaces/internal/Face_clustering.h>
 #include <CGAL/Tilable_surfaces/internal/Union_find.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -43,12 +44,6 @@ double distance(const Point& a, const Point& b)
   const double dz = CGAL::to_double(a.z()) - CGAL::to_double(b.z());
   return std::sqrt(dx * dx + dy * dy + dz * dz);
 }
-
-// Tag: the mesh passed with it was accepted by validate_quad_mesh().
-struct Validated_mesh
-{
-  explicit Validated_mesh(bool) {}
-};
 
 } // namespace internal
 
@@ -120,46 +115,36 @@ public:
   /// \throws Invalid_input if `pm` fails `validate_quad_mesh()` (with the
   /// `vertex_point_map` of `np`, if any), or a face has a cluster out of
   /// 0..K-1 or an orientation out of 0..7.
-  template <typename FaceClusterMap, typename FaceOrientationMap,
-            typename CGAL_NP_TEMPLATE_PARAMETERS>
-  Edge_sharing_graph(const PolygonMesh& pm, std::size_t number_of_clusters,
-                     FaceClusterMap face_cluster_map, FaceOrientationMap face_orientation_map,
+  template <typename FaceClusterMap, typename FaceOrientationMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
+  Edge_sharing_graph(const PolygonMesh& pm, std::size_t number_of_clusters, FaceClusterMap face_cluster_map,
+                     FaceOrientationMap face_orientation_map,
                      const CGAL_NP_CLASS& np = parameters::default_values())
-    : Edge_sharing_graph(internal::Validated_mesh(validated(pm, np)), pm, number_of_clusters,
-                         face_cluster_map, face_orientation_map, np)
+    : Edge_sharing_graph(
+        internal::Validated_mesh(true), pm, CGAL::get_initialized_face_index_map(pm, np),
+        internal::const_vertex_point_map(pm, np),
+        validated_clustering(pm, number_of_clusters, face_cluster_map, face_orientation_map, np))
   {}
 
   /// \cond SKIP_IN_MANUAL
-  // For the package's own use on a mesh `validate_quad_mesh()` accepted.
-  template <typename FaceClusterMap, typename FaceOrientationMap, typename NamedParameters>
-  Edge_sharing_graph(internal::Validated_mesh, const PolygonMesh& pm, std::size_t number_of_clusters,
-                     FaceClusterMap face_cluster_map, FaceOrientationMap face_orientation_map,
-                     const NamedParameters& np)
+  // For the package's own use on a mesh `validate_quad_mesh()` accepted,
+  // with a clustering already read and checked.
+  template <typename FaceIndexMap, typename VertexPointMap>
+  Edge_sharing_graph(internal::Validated_mesh, const PolygonMesh& pm, FaceIndexMap fim,
+                     VertexPointMap vpm, const internal::Face_clustering& clustering)
     : m_edge_index_map(CGAL::get_initialized_edge_index_map(pm))
   {
-    const auto fim = CGAL::get_initialized_face_index_map(pm, np);
-    const auto vpm = parameters::choose_parameter(
-      parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-      get_const_property_map(CGAL::vertex_point, pm));
     std::vector<std::size_t> edge_nodes(num_edges(pm), no_node());
-    reset(number_of_clusters);
-
+    reset(clustering.number_of_clusters);
     for(face_descriptor f : faces(pm))
     {
       const std::size_t fi = get(fim, f);
-      const long long c = static_cast<long long>(get(face_cluster_map, f));
-      const int o = static_cast<int>(get(face_orientation_map, f));
-      internal::check_face_label(fi, c, o, number_of_clusters);
-      if(CGAL::halfedges_around_face(halfedge(f, pm), pm).size() != 4)
-        throw Invalid_input("face " + std::to_string(fi) + " is not a quad",
-                            Invalid_input::FACE, fi);
-
-      const Quad_orientation orientation(o);
+      const std::size_t c = clustering.label[fi];
+      const Quad_orientation orientation = clustering.orientation[fi];
       const auto face_edges = face_edge_halfedges(f, pm);
       for(int j = 0; j < 4; ++j)
       {
         const halfedge_descriptor h = face_edges[std::size_t(j)];
-        const std::size_t node = 4 * std::size_t(c) + orientation.template_edge(j);
+        const std::size_t node = 4 * c + orientation.template_edge(j);
         std::size_t& edge_node = edge_nodes[get(m_edge_index_map, edge(h, pm))];
         if(edge_node == no_node())
         {
@@ -174,12 +159,12 @@ public:
   }
   /// \endcond
 
-  /// The number of clusters K the graph was built for (merged clusters
-  /// included: their ids stay reserved).
-  std::size_t number_of_clusters() const { return m_alive.size(); }
+  /// The number of cluster ids: K as built, merged clusters included (their
+  /// ids stay reserved until `compact_cluster_ids()`).
+  std::size_t number_of_clusters() const { return m_slot.size(); }
 
   /// Whether cluster `c` still exists (it was not merged into another one).
-  bool is_alive(std::size_t c) const { return m_alive.at(c); }
+  bool is_alive(std::size_t c) const { return m_alive.at(m_slot.at(c)); }
 
   /// The degree of flexibility: the number of components among the S-quad
   /// edges of the clusters that are alive.
@@ -190,11 +175,11 @@ public:
   /// lexicographic order, so they are deterministic.
   std::size_t component(std::size_t c, int k) const
   {
-    if(c >= m_alive.size() || !m_alive[c] || k < 0 || k > 3)
+    if(c >= m_slot.size() || !m_alive[m_slot[c]] || k < 0 || k > 3)
       throw Invalid_input("no S-quad edge (" + std::to_string(c) + ", " + std::to_string(k) +
                           ") in the edge-sharing graph", Invalid_input::PARAMETER);
     update_component_ids();
-    return m_component_id[find(4 * c + k)];
+    return m_component_id[find(4 * m_slot[c] + std::size_t(k))];
   }
 
   /// The component of mesh edge `e`.
@@ -232,15 +217,16 @@ public:
     internal::Small_union_find<8> components;
     std::array<Length_statistics, 8> merged;
     auto slot = [&](std::size_t node) {
-      const std::size_t r = find(node), seen = components.size();
-      const std::size_t i = components.slot(r);
-      if(components.size() > seen) merged[i] = m_lengths[r];
-      return components.sets().find(i);
+      const std::size_t r = find(node);
+      const std::pair<std::size_t, bool> s = components.slot(r);
+      if(s.second) merged[s.first] = m_lengths[r];
+      return components.sets().find(s.first);
     };
     double deviation = m_length_deviation;
     for(int k = 0; k < 4; ++k)
     {
-      const std::size_t a = slot(4 * kept + k), b = slot(4 * removed + correspondence.face_edge(k));
+      const std::size_t a = slot(4 * m_slot.at(kept) + std::size_t(k)),
+                        b = slot(4 * m_slot.at(removed) + correspondence.face_edge(k));
       if(a == b)
         continue;
       deviation += merged[a].deviation_if_joined(merged[b]);
@@ -264,23 +250,40 @@ public:
   std::size_t merge_clusters(std::size_t kept, std::size_t removed,
                              Quad_orientation correspondence)
   {
-    if(kept == removed || kept >= m_alive.size() || removed >= m_alive.size() ||
-       !m_alive[kept] || !m_alive[removed])
+    if(kept == removed || kept >= m_slot.size() || removed >= m_slot.size() ||
+       !m_alive[m_slot[kept]] || !m_alive[m_slot[removed]])
       throw Invalid_input("cannot merge cluster " + std::to_string(removed) + " into cluster " +
                           std::to_string(kept), Invalid_input::PARAMETER);
     for(int k = 0; k < 4; ++k)
-      link(4 * kept + k, 4 * removed + correspondence.face_edge(k));
-    m_alive[removed] = false;
+      link(4 * m_slot[kept] + std::size_t(k), 4 * m_slot[removed] + correspondence.face_edge(k));
+    m_alive[m_slot[removed]] = false;
     m_ids_valid = false;
     return m_number_of_components;
   }
 
+  /// Drops the ids of the merged clusters: the clusters alive keep their
+  /// order and are numbered 0..K'-1, as `Tilable_surfaces::merge_clusters()`
+  /// renumbers the maps. O(K); the components do not change.
+  void compact_cluster_ids()
+  {
+    std::vector<std::size_t> alive;
+    for(std::size_t s : m_slot)
+      if(m_alive[s])
+        alive.push_back(s);
+    m_slot.swap(alive);
+  }
+
 private:
-  template <typename NamedParameters>
-  static bool validated(const PolygonMesh& pm, const NamedParameters& np)
+  // The mesh checked first, then the clustering of the maps.
+  template <typename FaceClusterMap, typename FaceOrientationMap, typename NamedParameters>
+  static internal::Face_clustering validated_clustering(const PolygonMesh& pm, std::size_t number_of_clusters,
+                                                        FaceClusterMap face_cluster_map,
+                                                        FaceOrientationMap face_orientation_map,
+                                                        const NamedParameters& np)
   {
     validate_quad_mesh(pm, np);
-    return true;
+    return internal::read_face_clustering(pm, CGAL::get_initialized_face_index_map(pm, np), face_cluster_map,
+                                          face_orientation_map, number_of_clusters);
   }
 
   static std::size_t no_node() { return (std::numeric_limits<std::size_t>::max)(); }
@@ -307,6 +310,9 @@ private:
   {
     const std::size_t n = 4 * number_of_clusters;
     m_alive.assign(number_of_clusters, true);
+    m_slot.resize(number_of_clusters);
+    for(std::size_t c = 0; c < number_of_clusters; ++c)
+      m_slot[c] = c;
     m_sets.reset(n);
     m_lengths.assign(n, Length_statistics());
     m_length_deviation = 0;
@@ -336,13 +342,16 @@ private:
       return;
     m_component_id.assign(4 * m_alive.size(), no_node());
     std::size_t next_id = 0;
-    for(std::size_t node = 0; node < 4 * m_alive.size(); ++node)
+    for(std::size_t s : m_slot) // in the order of the ids
     {
-      if(!m_alive[node / 4])
+      if(!m_alive[s])
         continue;
-      std::size_t& id = m_component_id[find(node)];
-      if(id == no_node())
-        id = next_id++;
+      for(std::size_t k = 0; k < 4; ++k)
+      {
+        std::size_t& id = m_component_id[find(4 * s + k)];
+        if(id == no_node())
+          id = next_id++;
+      }
     }
     m_ids_valid = true;
   }
@@ -353,7 +362,8 @@ private:
   // One S-quad edge node per mesh edge. Never modified after construction,
   // so copies share it: copying the graph costs O(K), not O(#edges).
   std::shared_ptr<const std::vector<std::size_t> > m_edge_node;
-  std::vector<bool> m_alive;
+  std::vector<bool> m_alive;          // by slot
+  std::vector<std::size_t> m_slot;   // the slot (nodes 4 s .. 4 s + 3) of every cluster id
   internal::Union_find<> m_sets;
   std::size_t m_number_of_components = 0;
   std::vector<Length_statistics> m_lengths; // valid at the roots

@@ -18,6 +18,7 @@
 #include <CGAL/Tilable_surfaces/optimize_tilable_surface.h>
 #include <CGAL/Tilable_surfaces/validation.h>
 #include <CGAL/Tilable_surfaces/visitor.h>
+#include <CGAL/Tilable_surfaces/internal/Face_clustering.h>
 #include <CGAL/Tilable_surfaces/internal/parallel_for.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -26,9 +27,11 @@
 
 #include <algorithm>
 #include <limits>
+#include <memory>
+#include <optional>
 #include <string>
+#include <type_traits>
 #include <utility>
-
 #include <vector>
 
 namespace CGAL {
@@ -52,18 +55,27 @@ inline bool is_better(const Optimization_result& a, const Optimization_result& b
 
 /// \ingroup PkgTilableSurfacesRef
 /// A quad mesh on its way to a K-set tilable surface, one step at a time, as
-/// `Variational_shape_approximation` does for VSA:
-/// `cluster()` groups the faces into K S-quads, `merge_clusters()`,
+/// `Variational_shape_approximation` does for VSA (user manual, section "Step
+/// by step"); `make_k_set_tilable()` is a thin wrapper over it.
+/// `cluster()` groups the faces into K S-quads (or its four stages,
+/// `initialize_clusters()` to `select_candidate()`), `merge_clusters()`,
 /// `split_cluster()` and `retag_orientations()` edit the clustering (paper
 /// §5) and report the new degree of flexibility, `optimize()` moves the
 /// vertices of the mesh so that every face is congruent to its S-quad, and
 /// `measure()` / `tile_catalog()` report on the result.
 ///
-/// The object keeps the cluster and orientation of every face (readable
-/// through `face_cluster_map()` and `face_orientation_map()`) and the input
-/// positions, against which the result is measured. It refers to the mesh
-/// passed to the constructor, whose vertices only `optimize()` moves; the
-/// connectivity must not change while the object is used.
+/// The object is the state the steps share: the input positions (against
+/// which every result is measured) and the quads they form, the clustering
+/// parameters of the last `cluster()` (orientation policy, similarity
+/// threshold), the cluster and orientation of every face (readable through
+/// `face_cluster_map()` and `face_orientation_map()`, which stay valid for
+/// the object's lifetime), the edge-sharing graph of the clustering, and the
+/// candidate pool. The mesh is checked once, by the constructor; the steps
+/// reuse that state instead of checking and re-reading the mesh, and an edit
+/// updates the graph (incrementally for a merge) instead of rebuilding
+/// everything. It refers to the mesh passed to the constructor, whose vertices
+/// only the optimizing steps move; the connectivity must not change while the
+/// object is used.
 ///
 /// \tparam PolygonMesh a model of `FaceListGraph` and `MutableFaceGraph`
 ///   with quad faces.
@@ -86,6 +98,10 @@ class K_set_tilable_surface
 public:
   /// The faces of the mesh.
   typedef typename boost::graph_traits<PolygonMesh>::face_descriptor face_descriptor;
+  /// Readable map from vertices to their input positions.
+  typedef boost::iterator_property_map<typename std::vector<Point>::const_iterator, Vertex_index_map, Point,
+                                       const Point&>
+    Input_point_map;
   /// Readable and writable map from faces to their cluster id (0..K-1).
   typedef boost::iterator_property_map<std::vector<int>::iterator, Face_index_map, int, int&>
     Face_cluster_map;
@@ -104,10 +120,15 @@ public:
     , m_cluster(num_faces(pm), 0)
     , m_orientation(num_faces(pm), 0)
   {
-    validate_quad_mesh(pm, parameters::vertex_point_map(m_vpm));
+    m_clustering_model.label.assign(num_faces(pm), 0);
+    m_clustering_model.orientation.assign(num_faces(pm), Quad_orientation());
+    const auto np = parameters::vertex_point_map(m_vpm).face_index_map(m_fim);
+    validate_quad_mesh(pm, np);
     m_input_points.resize(num_vertices(pm));
     for(auto v : vertices(pm))
       m_input_points[get(m_vim, v)] = get(m_vpm, v);
+    m_input_quads = internal::face_quads(pm, m_fim, np);
+    m_mean_edge_length = mean_edge_length(pm, np);
   }
 
   /// The same, with the mesh's internal vertex point map.
@@ -115,19 +136,59 @@ public:
     : K_set_tilable_surface(pm, get(CGAL::vertex_point, pm))
   {}
 
-  /// Clusters the faces into `number_of_tiles` S-quads (`cluster_quads()`,
-  /// whose named parameters `np` takes, except the two maps: the object's
-  /// own are used). The previous clustering and optimization are forgotten.
+  /// Clusters the faces into `number_of_tiles` S-quads as `cluster_quads()`
+  /// does (whose named parameters `np` takes, except the two maps: the
+  /// object's own are used), from the input quads: the four stages below in
+  /// turn, each reported to the visitor's `phase()`. The previous clustering
+  /// and optimization are forgotten.
   template <typename CGAL_NP_TEMPLATE_PARAMETERS>
   const Clustering_result& cluster(const CGAL_NP_CLASS& np)
   {
-    restore_input();
-    m_policy = internal::orientation_policy(np);
-    with_concurrency([&] { m_clustering = cluster_quads(m_mesh, with_own_maps(np)); });
-    m_number_of_clusters = m_clustering.cluster_sizes.size();
-    m_is_clustered = true;
-    m_similarity_threshold = parameters::choose_parameter(
-      parameters::get_parameter(np, internal_np::similarity_threshold), defaults::similarity_threshold);
+    start_clustering(np);
+    auto&& visitor = internal::visitor_of(np);
+    adopt_selected_candidate(with_concurrency([&] { return m_clusterer->run(m_clustering, visitor); }));
+    return m_clustering;
+  }
+
+  /// Stage 1 of `cluster()`: reads its parameters and chooses the path
+  /// (`Clustering_result::path`), then clusters the faces by a similarity
+  /// threshold, split up to K clusters if it gives fewer (paper §4.1).
+  /// Returns the number N of these initial clusters. The clustering in the
+  /// maps stays the previous one until `select_candidate()`;
+  /// `clustering()` shows the pool being built.
+  /// \throws Invalid_input if K is out of 1..number of faces.
+  template <typename CGAL_NP_TEMPLATE_PARAMETERS>
+  std::size_t initialize_clusters(const CGAL_NP_CLASS& np)
+  {
+    start_clustering(np);
+    with_concurrency([&] { m_clusterer->initialize(m_clustering); });
+    return m_clustering.number_of_initial_clusters;
+  }
+
+  /// Stage 2: merges the initial clusters down to K by a beam search on the
+  /// score of paper §4.2, adding the beam to the candidate pool
+  /// (`Clustering_result::candidates`). Returns the size of the pool.
+  std::size_t merge_to_tile_count()
+  {
+    with_concurrency([&] { clusterer().merge_to_tile_count(m_clustering); });
+    return m_clustering.candidates.size();
+  }
+
+  /// Stage 3: adds the k-means, quad-strip and grid-segment candidates that
+  /// the parameters of `initialize_clusters()` ask for. Returns the size of
+  /// the pool.
+  std::size_t add_other_candidates()
+  {
+    with_concurrency([&] { clusterer().add_other_candidates(m_clustering); });
+    return m_clustering.candidates.size();
+  }
+
+  /// Stage 4: makes the candidate of lowest score the current clustering,
+  /// with each cluster's S-quad and every face tagged with an orientation
+  /// chosen for flexibility (`Clustering_result::chosen_candidate`).
+  const Clustering_result& select_candidate()
+  {
+    adopt_selected_candidate(with_concurrency([&] { return clusterer().select(m_clustering); }));
     return m_clustering;
   }
 
@@ -141,41 +202,33 @@ public:
   void set_clustering(FaceClusterMap face_cluster_map, FaceOrientationMap face_orientation_map,
                       Orientation_policy policy = PROPER_RIGID_MOTIONS)
   {
-    std::vector<int> cluster(m_cluster.size()), orientation(m_orientation.size());
-    std::size_t k = 0;
-    for(face_descriptor f : faces(m_mesh))
-    {
-      cluster[get(m_fim, f)] = int(get(face_cluster_map, f));
-      orientation[get(m_fim, f)] = int(get(face_orientation_map, f));
-      k = (std::max)(k, std::size_t((std::max)(0, cluster[get(m_fim, f)])) + 1);
-    }
-    std::vector<bool> used(k, false);
-    for(std::size_t f = 0; f < cluster.size(); ++f)
-    {
-      internal::check_face_label(f, cluster[f], orientation[f], k);
-      used[std::size_t(cluster[f])] = true;
-    }
-    for(std::size_t c = 0; c < k; ++c)
-      if(!used[c])
-        throw Invalid_input("cluster " + std::to_string(c) + " has no face; ids must be 0..K-1",
-                            Invalid_input::PARAMETER);
-    // Copied into place: the maps handed out keep reading them.
-    std::copy(cluster.begin(), cluster.end(), m_cluster.begin());
-    std::copy(orientation.begin(), orientation.end(), m_orientation.begin());
-    m_number_of_clusters = k;
+    internal::Face_clustering clustering =
+      internal::read_face_clustering(m_mesh, m_fim, face_cluster_map, face_orientation_map,
+                                     internal::unknown_number_of_clusters, internal::CONTIGUOUS_IDS);
     m_clustering = Clustering_result();
-    m_is_clustered = true;
+    m_clustering.weights_are_exact = false;
     m_policy = policy;
+    m_is_clustered = true;
+    set_clustering_model(std::move(clustering));
   }
-
   /// Whether a clustering exists (`cluster()` or `set_clustering()`).
   bool is_clustered() const { return m_is_clustered; }
 
   /// The number of clusters K.
-  std::size_t number_of_clusters() const { return m_number_of_clusters; }
+  std::size_t number_of_clusters() const { return m_clustering_model.number_of_clusters; }
 
-  /// The result of the last `cluster()` call (empty after `set_clustering()`).
-  const Clustering_result& clustering() const { return m_clustering; }
+  /// The current clustering: after `cluster()`, its result; after an edit,
+  /// `use_candidate()`, `set_clustering()` or the fidelity search of
+  /// `optimize_closest()`, the same description of the clustering now in the
+  /// maps (S-quads and sizes, DOF, weights: exact if `cluster()` took the
+  /// exact path, else estimated), with the candidate pool of the last
+  /// `cluster()` (none after `set_clustering()`).
+  const Clustering_result& clustering() const
+  {
+    if(m_summary_is_stale)
+      describe_current_clustering();
+    return m_clustering;
+  }
 
   /// The cluster of every face.
   Face_cluster_map face_cluster_map() { return Face_cluster_map(m_cluster.begin(), m_fim); }
@@ -183,38 +236,32 @@ public:
   /// The S-quad orientation of every face.
   Face_orientation_map face_orientation_map() { return Face_orientation_map(m_orientation.begin(), m_fim); }
 
-  /// The edge-sharing graph of the current clustering.
-  Edge_sharing_graph<PolygonMesh> edge_sharing_graph()
+  /// The edge-sharing graph of the current clustering, with the input's edge
+  /// lengths. The object keeps it: a merge amends it, other edits rebuild it
+  /// when it is next asked for.
+  const Edge_sharing_graph<PolygonMesh>& edge_sharing_graph() const
   {
     require_clustering();
-    return Edge_sharing_graph<PolygonMesh>(m_mesh, m_number_of_clusters, face_cluster_map(),
-                                           face_orientation_map(),
-                                           parameters::vertex_point_map(m_vpm).face_index_map(m_fim));
+    if(!m_graph)
+      m_graph.emplace(internal::Validated_mesh(true), m_mesh, m_fim, input_point_map(), m_clustering_model);
+    return *m_graph;
   }
 
   /// Makes candidate `i` of the pool of the last `cluster()`
   /// (`clustering().candidates`) the current clustering, with S-quads and
   /// flexible orientations computed as `cluster_quads()` does for the one it
-  /// returns, from the input positions. Returns its degree of flexibility.
+  /// returns, from the input quads. Returns its degree of flexibility.
   std::size_t use_candidate(std::size_t i)
   {
     if(i >= m_clustering.candidates.size())
       throw Invalid_input("no clustering candidate " + std::to_string(i), Invalid_input::PARAMETER);
-    restore_input();
     const std::vector<std::size_t>& label = m_clustering.candidates[i].face_cluster;
-    const std::size_t k = m_number_of_clusters;
-    const auto np = parameters::vertex_point_map(m_vpm).face_index_map(m_fim);
-    internal::Cluster_shapes shapes;
-    with_concurrency([&] {
-      shapes = internal::finished_clustering(m_mesh, m_fim, m_vpm, internal::face_quads(m_mesh, m_fim, np),
-                                             label, k, m_policy,
-                                             m_similarity_threshold * mean_edge_length(m_mesh, np));
+    const std::size_t k = m_clustering.cluster_sizes.size();
+    const internal::Cluster_shapes shapes = with_concurrency([&] {
+      return internal::finished_clustering(m_mesh, m_fim, input_point_map(), m_input_quads, label, k,
+                                           m_policy, m_similarity_threshold * m_mean_edge_length);
     });
-    for(std::size_t f = 0; f < label.size(); ++f)
-    {
-      m_cluster[f] = int(label[f]);
-      m_orientation[f] = shapes.orientation[f].index();
-    }
+    set_clustering_model(internal::Face_clustering{label, shapes.orientation, k});
     return shapes.degree_of_flexibility;
   }
 
@@ -226,9 +273,9 @@ public:
   {
     require_clustering();
     restore_input();
-    Displacement_prediction prediction;
-    with_concurrency([&] { prediction = Tilable_surfaces::predict_displacement(m_mesh, with_own_maps(np)); });
-    return prediction;
+    return with_concurrency([&] {
+      return internal::predict_displacement(internal::Validated_mesh(true), m_mesh, with_own_maps(np));
+    });
   }
 
   /// Looks for the tilable result closest to the input among several
@@ -327,7 +374,7 @@ public:
     std::size_t failed_in_a_row = 0;
     for(int round = 0; (round < rounds || (rounds > 0 && round < rounds + repair_rounds &&
                                            !best.optimization.converged)) &&
-                       m_number_of_clusters > 1 && !stopped;
+                       number_of_clusters() > 1 && !stopped;
         ++round)
     {
       timer.reset();
@@ -355,40 +402,57 @@ public:
   }
 
   /// The degree of flexibility of the current clustering.
-  std::size_t degree_of_flexibility() { return edge_sharing_graph().degree_of_flexibility(); }
+  std::size_t degree_of_flexibility() const { return edge_sharing_graph().degree_of_flexibility(); }
 
-  /// Merges clusters `a` and `b` (see `Tilable_surfaces::merge_clusters()`);
-  /// returns the new degree of flexibility.
+  /// Merges clusters `a` and `b` as `Tilable_surfaces::merge_clusters()`
+  /// does, judged on the input quads, and amends the edge-sharing graph
+  /// (O(K) unions, no rebuild); returns the new degree of flexibility.
+  /// \throws Invalid_input if `a == b` or a cluster does not exist; nothing
+  /// changes then.
   std::size_t merge_clusters(std::size_t a, std::size_t b)
   {
     require_clustering();
-    std::size_t dof = 0;
-    with_concurrency([&] { dof = Tilable_surfaces::merge_clusters(m_mesh, a, b, own_maps()); });
-    --m_number_of_clusters;
-    return dof;
+    edge_sharing_graph();
+    with_concurrency([&] {
+      const Quad_orientation correspondence =
+        internal::merge_clusters(m_clustering_model, m_input_quads, a, b, m_policy);
+      m_graph->merge_clusters((std::min)(a, b), (std::max)(a, b), correspondence);
+      m_graph->compact_cluster_ids();
+    });
+    publish_clustering_model();
+    return m_graph->degree_of_flexibility();
   }
 
-  /// Splits cluster `c` in two (see `Tilable_surfaces::split_cluster()`);
-  /// returns the new degree of flexibility.
-  std::size_t split_cluster(std::size_t c, unsigned int random_seed = 0)
+  /// Splits cluster `c` in two as `Tilable_surfaces::split_cluster()` does,
+  /// judged on the input quads; returns the new degree of flexibility.
+  /// \throws Invalid_input if `c` does not exist or has a single face;
+  /// nothing changes then.
+  std::size_t split_cluster(std::size_t c, unsigned int random_seed = defaults::random_seed)
   {
     require_clustering();
-    std::size_t dof = 0;
-    with_concurrency(
-      [&] { dof = Tilable_surfaces::split_cluster(m_mesh, c, own_maps().random_seed(random_seed)); });
-    ++m_number_of_clusters;
-    return dof;
+    with_concurrency([&] {
+      CGAL::Random random(random_seed);
+      internal::split_cluster(m_clustering_model, m_input_quads, c, m_policy, random);
+    });
+    m_graph.reset(); // a union-find cannot undo a union
+    publish_clustering_model();
+    return degree_of_flexibility();
   }
 
   /// Re-tags every face with the orientation that best matches its cluster's
-  /// S-quad (see `Tilable_surfaces::retag_orientations()`); returns the new
-  /// degree of flexibility.
+  /// S-quad, as `Tilable_surfaces::retag_orientations()` does with the
+  /// clustering's similarity threshold, judged on the input quads; returns
+  /// the new degree of flexibility.
   std::size_t retag_orientations()
   {
     require_clustering();
-    std::size_t dof = 0;
-    with_concurrency([&] { dof = Tilable_surfaces::retag_orientations(m_mesh, own_maps()); });
-    return dof;
+    with_concurrency([&] {
+      internal::retag_orientations(m_clustering_model, m_mesh, m_fim, m_input_quads, m_policy,
+                                   m_similarity_threshold * m_mean_edge_length);
+    });
+    m_graph.reset();
+    publish_clustering_model();
+    return degree_of_flexibility();
   }
 
   /// Moves the vertices of the mesh so that every face becomes congruent to
@@ -402,7 +466,9 @@ public:
   {
     require_clustering();
     restore_input();
-    with_concurrency([&] { m_optimization = optimize_tilable_surface(m_mesh, with_own_maps(np)); });
+    m_optimization = with_concurrency([&] {
+      return internal::optimize_tilable_surface(internal::Validated_mesh(true), m_mesh, with_own_maps(np));
+    });
     return m_optimization;
   }
 
@@ -414,20 +480,16 @@ public:
   Tilability_measure measure()
   {
     require_clustering();
-    Tilability_measure m;
-    with_concurrency([&] {
-      m = measure_tilability(m_mesh, m_mesh, own_maps(),
-                             parameters::vertex_point_map(input_point_map()).vertex_index_map(m_vim));
+    return with_concurrency([&] {
+      return internal::measure_tilability(
+        internal::Validated_mesh(true), m_mesh, m_mesh, own_maps(),
+        parameters::vertex_point_map(input_point_map()).vertex_index_map(m_vim));
     });
-    return m;
   }
 
   /// The positions of the input, as they were when the object was made: a
   /// readable property map from the vertices of the mesh to points.
-  auto input_point_map() const
-  {
-    return boost::make_iterator_property_map(m_input_points.cbegin(), m_vim);
-  }
+  Input_point_map input_point_map() const { return Input_point_map(m_input_points.cbegin(), m_vim); }
 
   /// Puts the input positions back in the mesh. Clustering, edits and solves
   /// call it first: they start from the input, never from a result.
@@ -442,11 +504,12 @@ public:
 
 private:
   // What the fidelity search keeps of the best result so far.
+  // (The graph is kept too: a copy costs O(K).)
   struct State
   {
     std::vector<Point> points;
-    std::vector<int> cluster, orientation;
-    std::size_t number_of_clusters = 0;
+    internal::Face_clustering clustering;
+    std::optional<Edge_sharing_graph<PolygonMesh> > graph;
     Optimization_result optimization;
   };
 
@@ -456,9 +519,8 @@ private:
     st.points.resize(num_vertices(m_mesh));
     for(auto v : vertices(m_mesh))
       st.points[get(m_vim, v)] = get(m_vpm, v);
-    st.cluster = m_cluster;
-    st.orientation = m_orientation;
-    st.number_of_clusters = m_number_of_clusters;
+    st.clustering = m_clustering_model;
+    st.graph = m_graph;
     st.optimization = m_optimization;
     return st;
   }
@@ -466,10 +528,43 @@ private:
   void set_state(const State& st)
   {
     write_points(st.points);
-    std::copy(st.cluster.begin(), st.cluster.end(), m_cluster.begin());
-    std::copy(st.orientation.begin(), st.orientation.end(), m_orientation.begin());
-    m_number_of_clusters = st.number_of_clusters;
+    m_clustering_model = st.clustering;
+    m_graph = st.graph;
+    publish_clustering_model();
     m_optimization = st.optimization;
+  }
+
+  // Makes `clustering` the current one; the graph is rebuilt when needed.
+  void set_clustering_model(internal::Face_clustering clustering)
+  {
+    m_clustering_model = std::move(clustering);
+    m_graph.reset();
+    publish_clustering_model();
+  }
+
+  // Writes the model into the storage of the maps handed out (in place: they
+  // stay valid) and marks the description of clustering() stale.
+  void publish_clustering_model()
+  {
+    for(std::size_t f = 0; f < m_cluster.size(); ++f)
+    {
+      m_cluster[f] = int(m_clustering_model.label[f]);
+      m_orientation[f] = m_clustering_model.orientation[f].index();
+    }
+    m_summary_is_stale = true;
+  }
+
+  void describe_current_clustering() const
+  {
+    const internal::Face_clustering& fc = m_clustering_model;
+    const internal::Cluster_shapes shapes =
+      internal::cluster_shapes(m_input_quads, fc.label, fc.number_of_clusters, m_policy);
+    internal::describe_clustering(fc.label, fc.number_of_clusters, shapes, degree_of_flexibility(),
+                                  m_clustering.weights_are_exact, [&](std::size_t p, std::size_t q) {
+                                    return internal::fast_best_match(m_input_quads[p], m_input_quads[q],
+                                                                     m_policy).dissimilarity;
+                                  }, m_clustering);
+    m_summary_is_stale = false;
   }
 
   void write_points(const std::vector<Point>& points)
@@ -497,8 +592,8 @@ private:
   template <typename NP>
   bool improvement_edit(const NP& np, std::size_t rank)
   {
-    std::vector<double> moved(m_number_of_clusters, 0.0);
-    std::vector<std::size_t> size(m_number_of_clusters, 0);
+    std::vector<double> moved(number_of_clusters(), 0.0);
+    std::vector<std::size_t> size(number_of_clusters(), 0);
     for(auto f : faces(m_mesh))
     {
       double sum = 0;
@@ -513,7 +608,7 @@ private:
       return repair && c < misfit.size() ? misfit[c] : moved[c] / double(size[c]);
     };
     std::vector<std::size_t> splittable;
-    for(std::size_t c = 0; c < m_number_of_clusters; ++c)
+    for(std::size_t c = 0; c < number_of_clusters(); ++c)
       if(size[c] >= 2)
         splittable.push_back(c);
     if(rank >= splittable.size())
@@ -525,11 +620,11 @@ private:
     split_cluster(worst);
 
     // The pairs that spread the edge lengths least, judged by prediction.
-    const Edge_sharing_graph<PolygonMesh> graph = edge_sharing_graph();
+    const Edge_sharing_graph<PolygonMesh>& graph = edge_sharing_graph();
     std::vector<std::pair<double, std::pair<std::size_t, std::size_t> > > pairs;
-    const std::size_t new_part = m_number_of_clusters - 1;
-    for(std::size_t a = 0; a < m_number_of_clusters; ++a)
-      for(std::size_t b = a + 1; b < m_number_of_clusters; ++b)
+    const std::size_t new_part = number_of_clusters() - 1;
+    for(std::size_t a = 0; a < number_of_clusters(); ++a)
+      for(std::size_t b = a + 1; b < number_of_clusters(); ++b)
       {
         if(a == worst && b == new_part)
           continue; // that would undo the split
@@ -599,11 +694,60 @@ private:
     return ranked;
   }
 
-  // Runs f with the parallelism of ConcurrencyTag: the steps that compute.
-  template <typename F>
-  static void with_concurrency(const F& f)
+  typedef internal::Quad_clusterer<PolygonMesh, Face_index_map, Input_point_map> Clusterer;
+
+  // What cluster() and initialize_clusters() start with: the parameters
+  // checked and kept, the clusterer made, the description emptied.
+  template <typename NamedParameters>
+  void start_clustering(const NamedParameters& np)
   {
-    internal::run_with_concurrency<ConcurrencyTag>(f);
+    static_assert(!parameters::is_default_parameter<NamedParameters, internal_np::number_of_tiles_t>::value,
+                  "the named parameter number_of_tiles is required");
+    const std::size_t k = internal::tile_count(np, num_faces(m_mesh));
+    restore_input();
+    m_policy = internal::orientation_policy(np);
+    m_similarity_threshold = parameters::choose_parameter(
+      parameters::get_parameter(np, internal_np::similarity_threshold), defaults::similarity_threshold);
+    m_clusterer.reset(new Clusterer(m_mesh, m_fim, input_point_map(), m_input_quads, m_mean_edge_length, k,
+                                    internal::clustering_settings(np)));
+    m_clustering = Clustering_result();
+    m_summary_is_stale = false;
+  }
+
+  // The chosen candidate, with the orientations of `shapes`, becomes the
+  // current clustering; the clusterer's n x n dissimilarities are freed.
+  void adopt_selected_candidate(const internal::Cluster_shapes& shapes)
+  {
+    m_clusterer.reset();
+    set_clustering_model(internal::Face_clustering{
+      m_clustering.candidates[m_clustering.chosen_candidate].face_cluster, shapes.orientation,
+      m_clustering.cluster_sizes.size()});
+    m_summary_is_stale = false;
+    m_is_clustered = true;
+  }
+
+  Clusterer& clusterer()
+  {
+    if(!m_clusterer)
+      throw Invalid_input("no clustering under way: call initialize_clusters() first",
+                          Invalid_input::PARAMETER);
+    return *m_clusterer;
+  }
+
+  // Runs f with the parallelism of ConcurrencyTag (the steps that compute)
+  // and returns what it returns.
+  template <typename F>
+  static auto with_concurrency(const F& f)
+  {
+    typedef decltype(f()) Result;
+    if constexpr(std::is_void<Result>::value)
+      internal::run_with_concurrency<ConcurrencyTag>(f);
+    else
+    {
+      std::optional<Result> result;
+      internal::run_with_concurrency<ConcurrencyTag>([&] { result.emplace(f()); });
+      return std::move(*result);
+    }
   }
 
   // The parameters every step shares: the object's maps and indices, and the
@@ -645,13 +789,20 @@ private:
   Face_index_map m_fim;
   Vertex_index_map m_vim;
   std::vector<Point> m_input_points;  // positions of the input, by m_vim
-  std::vector<int> m_cluster;
-  std::vector<int> m_orientation;
-  std::size_t m_number_of_clusters = 0;
+  std::vector<Quad> m_input_quads;    // the quads of the input, by m_fim
+  double m_mean_edge_length = 0;      // of the input
+  // The clustering parameters of the last cluster() (or set_clustering()).
   bool m_is_clustered = false;
   Orientation_policy m_policy = PROPER_RIGID_MOTIONS;
   double m_similarity_threshold = defaults::similarity_threshold;
-  Clustering_result m_clustering;
+  // The current clustering, and a copy of it as ints that the maps handed out read.
+  internal::Face_clustering m_clustering_model;
+  std::vector<int> m_cluster;
+  std::vector<int> m_orientation;
+  mutable std::optional<Edge_sharing_graph<PolygonMesh> > m_graph;  // built when asked for
+  mutable Clustering_result m_clustering;
+  mutable bool m_summary_is_stale = false;
+  std::unique_ptr<Clusterer> m_clusterer;  // between initialize_clusters() and select_candidate()
   Optimization_result m_optimization;
 };
 

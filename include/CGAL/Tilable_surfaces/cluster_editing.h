@@ -26,7 +26,87 @@ namespace CGAL {
 namespace Tilable_surfaces {
 namespace internal {
 
-// The current labelling, read from the maps and checked.
+template <typename NP>
+Orientation_policy orientation_policy(const NP& np)
+{
+  return parameters::choose_parameter(
+    parameters::get_parameter(np, CGAL::Tilable_surfaces::internal_np::orientation_policy),
+    defaults::orientation_policy);
+}
+
+// The three edits on the clustered-mesh model, given the quads of the faces
+// they are judged on; the free functions below and K_set_tilable_surface
+// share them. Each keeps the ids 0..K-1.
+
+// Merges cluster max(a, b) into min(a, b); returns the correspondence between
+// their S-quads, which the edge-sharing graph needs.
+inline Quad_orientation merge_clusters(Face_clustering& fc, const std::vector<Quad>& quads, std::size_t a,
+                                       std::size_t b, Orientation_policy policy)
+{
+  fc.check_cluster(a);
+  fc.check_cluster(b);
+  if(a == b)
+    throw Invalid_input("cannot merge cluster " + std::to_string(a) + " with itself",
+                        Invalid_input::PARAMETER);
+  const std::size_t kept = (std::min)(a, b), removed = (std::max)(a, b);
+  const std::vector<std::vector<std::size_t> > members = fc.members();
+  auto s_quad = [&](std::size_t c) {
+    std::vector<Quad_orientation> o;
+    for(std::size_t f : members[c]) o.push_back(fc.orientation[f]);
+    return procrustes_mean(quads, members[c], policy, &o);
+  };
+  const Quad_orientation correspondence = fast_best_match(s_quad(kept), s_quad(removed), policy).orientation;
+  for(std::size_t f : members[removed])
+  {
+    fc.orientation[f] = fc.orientation[f] * correspondence;
+    fc.label[f] = kept;
+  }
+  for(std::size_t& l : fc.label)
+    if(l > removed) --l;
+  --fc.number_of_clusters;
+  return correspondence;
+}
+
+// Splits cluster `c` in two; the second part gets the id K.
+inline void split_cluster(Face_clustering& fc, const std::vector<Quad>& quads, std::size_t c,
+                          Orientation_policy policy, CGAL::Random& random)
+{
+  fc.check_cluster(c);
+  const std::vector<std::size_t> members = fc.members()[c];
+  if(members.size() < 2)
+    throw Invalid_input("cluster " + std::to_string(c) + " has a single face, it cannot be split",
+                        Invalid_input::PARAMETER);
+  std::vector<Quad_descriptor> descriptors(quads.size());
+  for(std::size_t f : members) descriptors[f] = shape_descriptor(quads[f]);
+  const std::vector<bool> second = split_in_two(quads, descriptors, members, policy, random);
+  std::vector<std::size_t> part[2];
+  for(std::size_t i = 0; i < second.size(); ++i)
+  {
+    part[second[i] ? 1 : 0].push_back(members[i]);
+    if(second[i]) fc.label[members[i]] = fc.number_of_clusters;
+  }
+  ++fc.number_of_clusters;
+  for(const std::vector<std::size_t>& p : part)
+  {
+    const Quad s_quad = procrustes_mean(quads, p, policy);
+    for(std::size_t f : p)
+      fc.orientation[f] = fast_best_match(s_quad, quads[f], policy).orientation;
+  }
+}
+
+// Re-tags every face against its cluster's Procrustes mean, near-ties within
+// `tolerance` chosen for flexibility.
+template <typename PolygonMesh, typename FaceIndexMap>
+void retag_orientations(Face_clustering& fc, const PolygonMesh& pm, FaceIndexMap fim,
+                        const std::vector<Quad>& quads, Orientation_policy policy, double tolerance)
+{
+  const Cluster_shapes shapes = cluster_shapes(quads, fc.label, fc.number_of_clusters, policy);
+  fc.orientation = flexible_orientations(pm, fim, quads, fc.label, shapes.s_quads, shapes.orientation, policy,
+                                         tolerance);
+}
+
+// The clustering in the maps of `np`, read and checked once, with the quads
+// of `pm`: what the free edit functions work on.
 template <typename PolygonMesh, typename NP>
 struct Editable_clustering
 {
@@ -36,72 +116,33 @@ struct Editable_clustering
   Face_index_map fim;
   Vertex_point_map vpm;
   std::vector<Quad> quads;
-  std::vector<std::size_t> label;
-  std::vector<Quad_orientation> orientation;
-  std::size_t k = 0;
+  Face_clustering fc;
 
   Editable_clustering(const PolygonMesh& pm, const NP& np)
     : fim(CGAL::get_initialized_face_index_map(pm, np))
-    , vpm(parameters::choose_parameter(parameters::get_parameter(np, CGAL::internal_np::vertex_point),
-                                       get_const_property_map(CGAL::vertex_point, pm)))
+    , vpm(internal::const_vertex_point_map(pm, np))
   {
     namespace TS_np = CGAL::Tilable_surfaces::internal_np;
     require_face_maps<NP>();
-    const auto cluster_map = parameters::get_parameter(np, TS_np::face_cluster);
-    const auto orientation_map = parameters::get_parameter(np, TS_np::face_orientation);
     validate_quad_mesh(pm, np);
+    fc = read_face_clustering(pm, fim, parameters::get_parameter(np, TS_np::face_cluster),
+                              parameters::get_parameter(np, TS_np::face_orientation),
+                              unknown_number_of_clusters, CONTIGUOUS_IDS);
     quads = face_quads(pm, fim, np);
-    label.resize(quads.size());
-    orientation.resize(quads.size());
-    for(auto f : faces(pm))
-    {
-      const std::size_t i = get(fim, f);
-      const long long c = static_cast<long long>(get(cluster_map, f));
-      if(c < 0)
-        throw Invalid_input("face " + std::to_string(i) + " has a negative cluster id",
-                            Invalid_input::FACE, i);
-      label[i] = std::size_t(c);
-      orientation[i] = Quad_orientation(static_cast<int>(get(orientation_map, f)));
-      k = (std::max)(k, label[i] + 1);
-    }
-    std::vector<bool> used(k, false);
-    for(std::size_t c : label) used[c] = true;
-    for(std::size_t c = 0; c < k; ++c)
-      if(!used[c])
-        throw Invalid_input("cluster ids are not contiguous: no face has cluster " +
-                            std::to_string(c), Invalid_input::PARAMETER);
-  }
-
-  void check_cluster(std::size_t c) const
-  {
-    if(c >= k)
-      throw Invalid_input("no cluster " + std::to_string(c) + " (there are " +
-                          std::to_string(k) + ")", Invalid_input::PARAMETER);
   }
 
   void write(const PolygonMesh& pm, const NP& np) const
   {
     namespace TS_np = CGAL::Tilable_surfaces::internal_np;
-    const auto cluster_map = parameters::get_parameter(np, TS_np::face_cluster);
-    const auto orientation_map = parameters::get_parameter(np, TS_np::face_orientation);
-    typedef typename boost::property_traits<
-      typename std::remove_const<decltype(cluster_map)>::type>::value_type Cluster_id;
-    for(auto f : faces(pm))
-    {
-      const std::size_t i = get(fim, f);
-      put(cluster_map, f, Cluster_id(label[i]));
-      put_orientation(orientation_map, f, orientation[i]);
-    }
+    write_face_clustering(pm, fim, fc, parameters::get_parameter(np, TS_np::face_cluster),
+                          parameters::get_parameter(np, TS_np::face_orientation));
+  }
+
+  std::size_t degree_of_flexibility(const PolygonMesh& pm) const
+  {
+    return Edge_sharing_graph<PolygonMesh>(Validated_mesh(true), pm, fim, vpm, fc).degree_of_flexibility();
   }
 };
-
-template <typename NP>
-Orientation_policy orientation_policy(const NP& np)
-{
-  return parameters::choose_parameter(
-    parameters::get_parameter(np, CGAL::Tilable_surfaces::internal_np::orientation_policy),
-    defaults::orientation_policy);
-}
 
 } // namespace internal
 
@@ -125,34 +166,10 @@ std::size_t merge_clusters(const PolygonMesh& pm, std::size_t a, std::size_t b,
                            const CGAL_NP_CLASS& np)
 {
   internal::Editable_clustering<PolygonMesh, CGAL_NP_CLASS> e(pm, np);
-  e.check_cluster(a);
-  e.check_cluster(b);
-  if(a == b)
-    throw Invalid_input("cannot merge cluster " + std::to_string(a) + " with itself",
-                        Invalid_input::PARAMETER);
-  const Orientation_policy policy = internal::orientation_policy(np);
-  const std::size_t kept = (std::min)(a, b), removed = (std::max)(a, b);
-
-  std::vector<std::vector<std::size_t> > members = internal::cluster_members(e.label, e.k);
-  auto s_quad = [&](std::size_t c) {
-    std::vector<Quad_orientation> o;
-    for(std::size_t f : members[c]) o.push_back(e.orientation[f]);
-    return internal::procrustes_mean(e.quads, members[c], policy, &o);
-  };
+  Edge_sharing_graph<PolygonMesh> graph(internal::Validated_mesh(true), pm, e.fim, e.vpm, e.fc);
   const Quad_orientation correspondence =
-    internal::fast_best_match(s_quad(kept), s_quad(removed), policy).orientation;
-
-  Edge_sharing_graph<PolygonMesh> graph =
-    internal::edge_sharing_graph(pm, e.fim, e.vpm, e.label, e.orientation, e.k);
-  const std::size_t dof = graph.merge_clusters(kept, removed, correspondence);
-
-  for(std::size_t f : members[removed])
-  {
-    e.orientation[f] = e.orientation[f] * correspondence;
-    e.label[f] = kept;
-  }
-  for(std::size_t& l : e.label)
-    if(l > removed) --l;
+    internal::merge_clusters(e.fc, e.quads, a, b, internal::orientation_policy(np));
+  const std::size_t dof = graph.merge_clusters((std::min)(a, b), (std::max)(a, b), correspondence);
   e.write(pm, np);
   return dof;
 }
@@ -174,34 +191,11 @@ template <class PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 std::size_t split_cluster(const PolygonMesh& pm, std::size_t c, const CGAL_NP_CLASS& np)
 {
   internal::Editable_clustering<PolygonMesh, CGAL_NP_CLASS> e(pm, np);
-  e.check_cluster(c);
-  const std::vector<std::vector<std::size_t> > members = internal::cluster_members(e.label, e.k);
-  if(members[c].size() < 2)
-    throw Invalid_input("cluster " + std::to_string(c) + " has a single face, it cannot be split",
-                        Invalid_input::PARAMETER);
-  const Orientation_policy policy = internal::orientation_policy(np);
   CGAL::Random random(parameters::choose_parameter(
     parameters::get_parameter(np, CGAL::internal_np::random_seed), defaults::random_seed));
-  std::vector<Quad_descriptor> descriptors(e.quads.size());
-  for(std::size_t f : members[c]) descriptors[f] = shape_descriptor(e.quads[f]);
-
-  const std::vector<bool> second =
-    internal::split_in_two(e.quads, descriptors, members[c], policy, random);
-  std::vector<std::size_t> part[2];
-  for(std::size_t i = 0; i < second.size(); ++i)
-  {
-    part[second[i] ? 1 : 0].push_back(members[c][i]);
-    if(second[i]) e.label[members[c][i]] = e.k;
-  }
-  for(const std::vector<std::size_t>& p : part)
-  {
-    const Quad s_quad = internal::procrustes_mean(e.quads, p, policy);
-    for(std::size_t f : p)
-      e.orientation[f] = internal::fast_best_match(s_quad, e.quads[f], policy).orientation;
-  }
+  internal::split_cluster(e.fc, e.quads, c, internal::orientation_policy(np), random);
   e.write(pm, np);
-  return internal::edge_sharing_graph(pm, e.fim, e.vpm, e.label, e.orientation, e.k + 1)
-           .degree_of_flexibility();
+  return e.degree_of_flexibility(pm);
 }
 
 /// \ingroup PkgTilableSurfacesRef
@@ -217,17 +211,13 @@ template <class PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 std::size_t retag_orientations(const PolygonMesh& pm, const CGAL_NP_CLASS& np)
 {
   internal::Editable_clustering<PolygonMesh, CGAL_NP_CLASS> e(pm, np);
-  const Orientation_policy policy = internal::orientation_policy(np);
   const double tau = parameters::choose_parameter(
     parameters::get_parameter(np, CGAL::Tilable_surfaces::internal_np::similarity_threshold),
     defaults::similarity_threshold);
-  const internal::Cluster_shapes shapes = internal::cluster_shapes(e.quads, e.label, e.k, policy);
-  e.orientation = internal::flexible_orientations(pm, e.fim, e.quads, e.label, shapes.s_quads,
-                                                  shapes.orientation, policy,
-                                                  tau * mean_edge_length(pm, np));
+  internal::retag_orientations(e.fc, pm, e.fim, e.quads, internal::orientation_policy(np),
+                               tau * mean_edge_length(pm, np));
   e.write(pm, np);
-  return internal::edge_sharing_graph(pm, e.fim, e.vpm, e.label, e.orientation, e.k)
-           .degree_of_flexibility();
+  return e.degree_of_flexibility(pm);
 }
 
 } // namespace Tilable_surfaces

@@ -113,13 +113,6 @@ struct Clustering_result
 
 namespace internal {
 
-template <typename Map>
-void put_orientation(Map map, typename boost::property_traits<Map>::key_type f,
-                     Quad_orientation o)
-{
-  put(map, f, typename boost::property_traits<Map>::value_type(o.index()));
-}
-
 // The corners of every face, indexed by `fim`.
 template <typename PolygonMesh, typename FaceIndexMap, typename NP>
 std::vector<Quad> face_quads(const PolygonMesh& pm, FaceIndexMap fim, const NP& np)
@@ -144,6 +137,38 @@ Cluster_shapes finished_clustering(const PolygonMesh& pm, FaceIndexMap fim, Vert
   shapes.degree_of_flexibility =
     edge_sharing_graph(pm, fim, vpm, label, shapes.orientation, k).degree_of_flexibility();
   return shapes;
+}
+
+// Describes the clustering `label` into `k` clusters in `result`: its
+// S-quads (those of `shapes`), sizes, DOF `dof` and weights, exact (the sum of
+// `dissimilarity(p, q)` over the pairs p < q of every cluster) or estimated
+// ((|C| - 1) times the sum of s(S-quad, q) over C).
+template <typename Dissimilarity>
+void describe_clustering(const std::vector<std::size_t>& label, std::size_t k, const Cluster_shapes& shapes,
+                         std::size_t dof, bool exact, const Dissimilarity& dissimilarity,
+                         Clustering_result& result)
+{
+  const std::size_t n = label.size();
+  result.s_quads = shapes.s_quads;
+  result.degree_of_flexibility = dof;
+  result.weights_are_exact = exact;
+  result.cluster_sizes.assign(k, 0);
+  result.cluster_weights.assign(k, 0.0);
+  result.total_weight = 0;
+  for(std::size_t f = 0; f < n; ++f) ++result.cluster_sizes[label[f]];
+  if(exact)
+  {
+    for(std::size_t p = 0; p < n; ++p)
+      for(std::size_t q = p + 1; q < n; ++q)
+        if(label[p] == label[q]) result.cluster_weights[label[p]] += dissimilarity(p, q);
+  }
+  else
+  {
+    for(std::size_t f = 0; f < n; ++f) result.cluster_weights[label[f]] += shapes.distance[f];
+    for(std::size_t c = 0; c < k; ++c)
+      result.cluster_weights[c] *= double(result.cluster_sizes[c] - 1);
+  }
+  for(double w : result.cluster_weights) result.total_weight += w;
 }
 
 // What cluster_quads() reads from its named parameters, besides K and the maps.
@@ -171,10 +196,13 @@ Clustering_settings clustering_settings(const NP& np)
     choose_parameter(get_parameter(np, TS_np::similarity_threshold), defaults::similarity_threshold);
   s.lambda = choose_parameter(get_parameter(np, TS_np::flexibility_penalty), defaults::flexibility_penalty);
   s.mu = choose_parameter(get_parameter(np, TS_np::structure_penalty), defaults::structure_penalty);
-  s.use_kmeans = choose_parameter(get_parameter(np, TS_np::use_kmeans_candidate), defaults::use_kmeans_candidate);
+  s.use_kmeans =
+    choose_parameter(get_parameter(np, TS_np::use_kmeans_candidate), defaults::use_kmeans_candidate);
   s.auto_merge = choose_parameter(get_parameter(np, TS_np::use_auto_merge), defaults::use_auto_merge);
-  s.use_strips = choose_parameter(get_parameter(np, TS_np::use_strip_candidates), defaults::use_strip_candidates);
-  s.use_segments = choose_parameter(get_parameter(np, TS_np::use_segment_candidates), defaults::use_segment_candidates);
+  s.use_strips =
+    choose_parameter(get_parameter(np, TS_np::use_strip_candidates), defaults::use_strip_candidates);
+  s.use_segments =
+    choose_parameter(get_parameter(np, TS_np::use_segment_candidates), defaults::use_segment_candidates);
   s.path = choose_parameter(get_parameter(np, TS_np::clustering_path), defaults::clustering_path);
   s.exact_limit =
     choose_parameter(get_parameter(np, TS_np::exact_clustering_limit), defaults::exact_clustering_limit);
@@ -207,6 +235,25 @@ public:
   {
     CGAL::Real_timer timer;
     timer.start();
+    auto stage = [&](const char* name) {
+      visitor.phase(name, timer.time());
+      timer.reset();
+    };
+    initialize(result);
+    stage("threshold clustering");
+    merge_to_tile_count(result);
+    stage("merges");
+    add_other_candidates(result);
+    stage("other candidates");
+    Cluster_shapes shapes = select(result);
+    stage("orientations");
+    return shapes;
+  }
+
+  // 1. The path, and the threshold clustering split up to K clusters if it
+  // has fewer, scored.
+  void initialize(Clustering_result& result)
+  {
     result.path = m_settings.path != AUTOMATIC_PATH ? m_settings.path
                 : (m_n <= m_settings.exact_limit ? EXACT_PATH : DESCRIPTOR_PATH);
     m_exact = (result.path == EXACT_PATH);
@@ -215,26 +262,31 @@ public:
       compute_affinity();
     threshold_clustering(result);
     score_initial_clustering();
-    visitor.phase("threshold clustering", timer.time());
-    timer.reset();
-    add_hierarchical_candidates(result);
-    visitor.phase("merges", timer.time());
-    timer.reset();
+  }
+
+  // 2. The last beam of binary merges down to K.
+  void merge_to_tile_count(Clustering_result& result) { add_hierarchical_candidates(result); }
+
+  // 3. The k-means, quad-strip and grid-segment candidates asked for.
+  void add_other_candidates(Clustering_result& result)
+  {
     if(m_settings.use_kmeans && m_k > 1)
       add_kmeans_candidate(result);
     if(m_settings.use_strips && m_k > 1)
-      for(const std::vector<std::size_t>& label : strip_clusterings(m_pm, m_fim, m_vpm, m_quads, m_descriptors,
-                                                                    m_k, m_settings.policy, m_random))
+      for(const std::vector<std::size_t>& label :
+          strip_clusterings(m_pm, m_fim, m_vpm, m_quads, m_descriptors, m_k, m_settings.policy, m_random))
         add_best_match_candidate(result, label, Clustering_candidate::QUAD_STRIPS);
     if(m_settings.use_segments && m_k > 1)
-      for(const std::vector<std::size_t>& label : segment_clusterings(m_pm, m_fim, m_vpm, m_k, m_settings.policy))
+      for(const std::vector<std::size_t>& label :
+          segment_clusterings(m_pm, m_fim, m_vpm, m_k, m_settings.policy))
         add_best_match_candidate(result, label, Clustering_candidate::GRID_SEGMENTS);
+  }
+
+  // 4. The candidate of lowest score, its S-quads and orientations.
+  Cluster_shapes select(Clustering_result& result) const
+  {
     choose(result);
-    visitor.phase("other candidates", timer.time());
-    timer.reset();
-    Cluster_shapes shapes = finish(result);
-    visitor.phase("orientations", timer.time());
-    return shapes;
+    return finish(result);
   }
 
 private:
@@ -250,7 +302,7 @@ private:
         m_affinity[q * m_n + p] = m_affinity[p * m_n + q];
   }
 
-  // 1. Threshold clustering, split up to K clusters if it has fewer.
+  // Threshold clustering, split up to K clusters if it has fewer.
   void threshold_clustering(Clustering_result& result)
   {
     const Descriptor_index index(m_descriptors);
@@ -300,7 +352,6 @@ private:
     return w;
   }
 
-  // 2. The last beam of binary merges.
   void add_hierarchical_candidates(Clustering_result& result)
   {
     const std::size_t big_n = m_init.leaders.size();
@@ -309,7 +360,8 @@ private:
     std::vector<Quad> leaders(big_n);
     for(std::size_t c = 0; c < big_n; ++c) leaders[c] = m_quads[m_init.leaders[c]];
     auto collect = [&](const auto& beam_search) {
-      for(const auto& s : beam_search.run(beam_search.initial_state(*m_initial_graph, faces_per_cluster), m_k))
+      for(const auto& s :
+          beam_search.run(beam_search.initial_state(*m_initial_graph, faces_per_cluster), m_k))
       {
         std::vector<std::size_t> group_of(big_n);
         for(std::size_t g = 0; g < s.members.size(); ++g)
@@ -321,16 +373,16 @@ private:
       }
     };
     if(m_exact)
-      collect(Beam_search<PolygonMesh, Exact_merge_costs>(Exact_merge_costs(m_affinity, m_init.cluster, big_n),
-                                                          leaders, m_settings.policy, m_score, m_settings.width,
-                                                          m_settings.auto_merge));
+      collect(Beam_search<PolygonMesh, Exact_merge_costs>(
+        Exact_merge_costs(m_affinity, m_init.cluster, big_n), leaders, m_settings.policy, m_score,
+        m_settings.width, m_settings.auto_merge));
     else
       collect(Beam_search<PolygonMesh, Descriptor_merge_costs>(
         Descriptor_merge_costs(m_descriptors, m_init.cluster, big_n), leaders, m_settings.policy, m_score,
         m_settings.width, m_settings.auto_merge));
   }
 
-  // 3. The k-means configuration, oriented on the face nearest to each centre.
+  // The k-means configuration, oriented on the face nearest to each centre.
   void add_kmeans_candidate(Clustering_result& result)
   {
     std::vector<std::size_t> all(m_n);
@@ -354,24 +406,27 @@ private:
     }
     std::vector<Quad_orientation> orientation(m_n);
     parallel_for(m_n, [&](std::size_t f) {
-      orientation[f] = fast_best_match(m_quads[representative[label[f]]], m_quads[f], m_settings.policy).orientation;
+      orientation[f] =
+        fast_best_match(m_quads[representative[label[f]]], m_quads[f], m_settings.policy).orientation;
     });
     add_candidate(result, label, Clustering_candidate::KMEANS, labelling_weight(label, m_k),
                   edge_sharing_graph(m_pm, m_fim, m_vpm, label, orientation, m_k));
   }
 
-  // 3b. A clustering that follows the quad strips or the segments of a quad
+  // A clustering that follows the quad strips or the segments of a quad
   // grid, each face oriented by its best match.
   void add_best_match_candidate(Clustering_result& result, const std::vector<std::size_t>& label,
                                 Clustering_candidate::Origin origin)
   {
     const Cluster_shapes shapes = cluster_shapes(m_quads, label, m_k, m_settings.policy);
-    const Edge_sharing_graph<PolygonMesh> graph = edge_sharing_graph(m_pm, m_fim, m_vpm, label, shapes.orientation, m_k);
+    const Edge_sharing_graph<PolygonMesh> graph =
+      edge_sharing_graph(m_pm, m_fim, m_vpm, label, shapes.orientation, m_k);
     add_candidate(result, label, origin, labelling_weight(label, m_k), graph);
   }
 
   void add_candidate(Clustering_result& result, const std::vector<std::size_t>& label,
-                     Clustering_candidate::Origin origin, double weight, const Edge_sharing_graph<PolygonMesh>& graph)
+                     Clustering_candidate::Origin origin, double weight,
+                     const Edge_sharing_graph<PolygonMesh>& graph)
   {
     Clustering_candidate cand;
     cand.origin = origin;
@@ -383,7 +438,7 @@ private:
     result.candidates.push_back(cand);
   }
 
-  // 4. The lowest score wins (the first on a tie).
+  // The lowest score wins (the first on a tie).
   void choose(Clustering_result& result) const
   {
     for(std::size_t i = 1; i < result.candidates.size(); ++i)
@@ -402,30 +457,14 @@ private:
       std::to_string(result.candidates.size()) + " candidates";
   }
 
-  // 5. S-quads, orientations, weights and DOF of the chosen configuration.
+  // S-quads, orientations, weights and DOF of the chosen configuration.
   Cluster_shapes finish(Clustering_result& result) const
   {
     const std::vector<std::size_t>& label = result.candidates[result.chosen_candidate].face_cluster;
     Cluster_shapes shapes = finished_clustering(m_pm, m_fim, m_vpm, m_quads, label, m_k, m_settings.policy,
                                                 m_settings.relative_threshold * m_length);
-    result.s_quads = shapes.s_quads;
-    result.degree_of_flexibility = shapes.degree_of_flexibility;
-    result.cluster_sizes.assign(m_k, 0);
-    result.cluster_weights.assign(m_k, 0.0);
-    for(std::size_t f = 0; f < m_n; ++f) ++result.cluster_sizes[label[f]];
-    if(m_exact)
-    {
-      for(std::size_t p = 0; p < m_n; ++p)
-        for(std::size_t q = p + 1; q < m_n; ++q)
-          if(label[p] == label[q]) result.cluster_weights[label[p]] += m_affinity[p * m_n + q];
-    }
-    else
-    {
-      for(std::size_t f = 0; f < m_n; ++f) result.cluster_weights[label[f]] += shapes.distance[f];
-      for(std::size_t c = 0; c < m_k; ++c)
-        result.cluster_weights[c] *= double(result.cluster_sizes[c] - 1);
-    }
-    for(double w : result.cluster_weights) result.total_weight += w;
+    describe_clustering(label, m_k, shapes, shapes.degree_of_flexibility, m_exact,
+                        [&](std::size_t p, std::size_t q) { return m_affinity[p * m_n + q]; }, result);
     return shapes;
   }
 
@@ -444,6 +483,47 @@ private:
   std::unique_ptr<Edge_sharing_graph<PolygonMesh> > m_initial_graph;
   Configuration_score m_score;
 };
+
+// The `number_of_tiles` of `np`, checked against the `n` faces.
+template <typename NamedParameters>
+std::size_t tile_count(const NamedParameters& np, std::size_t n)
+{
+  const long long k = static_cast<long long>(
+    parameters::get_parameter(np, CGAL::Tilable_surfaces::internal_np::number_of_tiles));
+  if(k < 1)
+    throw Invalid_input("number_of_tiles is " + std::to_string(k) + ", it must be at least 1",
+                        Invalid_input::PARAMETER);
+  if(std::size_t(k) > n)
+    throw Invalid_input("number_of_tiles is " + std::to_string(k) + ", more than the " + std::to_string(n) +
+                        " faces of the mesh", Invalid_input::PARAMETER);
+  return std::size_t(k);
+}
+
+// cluster_quads() on a mesh validate_quad_mesh() accepted, whose face quads
+// are `quads` (K_set_tilable_surface keeps them).
+template <class PolygonMesh, typename NamedParameters>
+Clustering_result cluster_quads(Validated_mesh, const PolygonMesh& pm, const NamedParameters& np,
+                                std::vector<Quad> quads)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  namespace TS_np = CGAL::Tilable_surfaces::internal_np;
+  const std::size_t k = tile_count(np, num_faces(pm));
+  const Clustering_settings settings = clustering_settings(np);
+
+  const auto fim = CGAL::get_initialized_face_index_map(pm, np);
+  const auto vpm = internal::const_vertex_point_map(pm, np);
+  Quad_clusterer<PolygonMesh, decltype(fim), decltype(vpm)> clusterer(pm, fim, vpm, std::move(quads),
+                                                                      mean_edge_length(pm, np), k, settings);
+  Clustering_result result;
+  auto&& visitor = visitor_of(np);
+  const Cluster_shapes shapes = clusterer.run(result, visitor);
+  const Face_clustering chosen{result.candidates[result.chosen_candidate].face_cluster, shapes.orientation,
+                               k};
+  write_face_clustering(pm, fim, chosen, get_parameter(np, TS_np::face_cluster),
+                        get_parameter(np, TS_np::face_orientation));
+  return result;
+}
 
 } // namespace internal
 
@@ -542,49 +622,13 @@ private:
 template <class PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 Clustering_result cluster_quads(const PolygonMesh& pm, const CGAL_NP_CLASS& np)
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  using parameters::is_default_parameter;
   namespace TS_np = CGAL::Tilable_surfaces::internal_np;
-
-  static_assert(!is_default_parameter<CGAL_NP_CLASS, TS_np::number_of_tiles_t>::value,
+  static_assert(!parameters::is_default_parameter<CGAL_NP_CLASS, TS_np::number_of_tiles_t>::value,
                 "cluster_quads(): the named parameter number_of_tiles is required");
   internal::require_face_maps<CGAL_NP_CLASS>();
-
-  const long long requested_k = static_cast<long long>(get_parameter(np, TS_np::number_of_tiles));
-  const auto cluster_map = get_parameter(np, TS_np::face_cluster);
-  const auto orientation_map = get_parameter(np, TS_np::face_orientation);
-  typedef typename boost::property_traits<
-    typename std::remove_const<decltype(cluster_map)>::type>::value_type Cluster_id;
-  const internal::Clustering_settings settings = internal::clustering_settings(np);
-
-  if(requested_k < 1)
-    throw Invalid_input("number_of_tiles is " + std::to_string(requested_k) +
-                        ", it must be at least 1", Invalid_input::PARAMETER);
   validate_quad_mesh(pm, np);
-  const std::size_t n = num_faces(pm);
-  const std::size_t k = std::size_t(requested_k);
-  if(k > n)
-    throw Invalid_input("number_of_tiles is " + std::to_string(k) + ", more than the " +
-                        std::to_string(n) + " faces of the mesh", Invalid_input::PARAMETER);
-
-  const auto fim = CGAL::get_initialized_face_index_map(pm, np);
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, pm));
-  internal::Quad_clusterer<PolygonMesh, decltype(fim), decltype(vpm)> clusterer(
-    pm, fim, vpm, internal::face_quads(pm, fim, np), mean_edge_length(pm, np), k, settings);
-  Clustering_result result;
-  auto&& visitor = internal::visitor_of(np);
-  const internal::Cluster_shapes shapes = clusterer.run(result, visitor);
-
-  const std::vector<std::size_t>& label = result.candidates[result.chosen_candidate].face_cluster;
-  for(auto f : faces(pm))
-  {
-    const std::size_t i = get(fim, f);
-    put(cluster_map, f, Cluster_id(label[i]));
-    internal::put_orientation(orientation_map, f, shapes.orientation[i]);
-  }
-  return result;
+  return internal::cluster_quads(internal::Validated_mesh(true), pm, np,
+                                 internal::face_quads(pm, CGAL::get_initialized_face_index_map(pm, np), np));
 }
 
 } // namespace Tilable_surfaces

@@ -35,8 +35,10 @@ namespace Tilable_surfaces {
 ///
 /// \throws Invalid_input if `pm` is not a valid quad mesh, or a K is 0 or
 /// more than the number of faces; `pm` is untouched then.
-template <typename ConcurrencyTag = CGAL::Sequential_tag, class PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
-std::vector<Tile_count_trial> k_set_tilable_curve(PolygonMesh& pm, const std::vector<std::size_t>& tile_counts,
+template <typename ConcurrencyTag = CGAL::Sequential_tag, class PolygonMesh,
+          typename CGAL_NP_TEMPLATE_PARAMETERS>
+std::vector<Tile_count_trial> k_set_tilable_curve(PolygonMesh& pm,
+                                                  const std::vector<std::size_t>& tile_counts,
                                                   const CGAL_NP_CLASS& np = parameters::default_values())
 {
   using parameters::choose_parameter;

@@ -186,7 +186,8 @@ K_set_tilable_result search_tile_count(PolygonMesh& pm, Surface& surface, Vertex
 ///
 /// \throws Invalid_input if `pm` or a parameter cannot be processed; `pm` and
 /// the maps are untouched then.
-template <typename ConcurrencyTag = CGAL::Sequential_tag, class PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
+template <typename ConcurrencyTag = CGAL::Sequential_tag, class PolygonMesh,
+          typename CGAL_NP_TEMPLATE_PARAMETERS>
 K_set_tilable_result make_k_set_tilable(PolygonMesh& pm, const CGAL_NP_CLASS& np)
 {
   using parameters::choose_parameter;

@@ -207,6 +207,21 @@ inline Tilability_measure measure_tilability(const Tilable_problem& problem,
   return m;
 }
 
+// measure_tilability() on meshes validate_quad_mesh() accepted, with the
+// same numbers of vertices and faces.
+template <typename PolygonMesh, typename NamedParameters, typename InputNamedParameters>
+Tilability_measure measure_tilability(Validated_mesh, const PolygonMesh& result, const PolygonMesh& input,
+                                      const NamedParameters& np, const InputNamedParameters& np_input)
+{
+  const Tilable_problem problem = make_tilable_problem(result, np);
+  const Point_matrix input_points = read_points(
+    input,
+    internal::const_vertex_point_map(input, np_input),
+    CGAL::get_initialized_vertex_index_map(input, np_input));
+  const Eigen::SparseMatrix<double> D = fairness_operator(result, input_points, np);
+  return measure_tilability(problem, D, input_points, problem.points);
+}
+
 } // namespace internal
 
 /// \ingroup PkgTilableSurfacesRef
@@ -247,14 +262,7 @@ Tilability_measure measure_tilability(const PolygonMesh& result, const PolygonMe
   validate_quad_mesh(input, np_input);
   if(num_vertices(result) != num_vertices(input) || num_faces(result) != num_faces(input))
     throw Invalid_input("the result and the input do not have the same numbers of vertices and faces");
-  const internal::Tilable_problem problem = internal::make_tilable_problem(result, np);
-  const internal::Point_matrix input_points = internal::read_points(
-    input,
-    parameters::choose_parameter(parameters::get_parameter(np_input, CGAL::internal_np::vertex_point),
-                                 get_const_property_map(CGAL::vertex_point, input)),
-    CGAL::get_initialized_vertex_index_map(input, np_input));
-  const Eigen::SparseMatrix<double> D = internal::fairness_operator(result, input_points, np);
-  return internal::measure_tilability(problem, D, input_points, problem.points);
+  return internal::measure_tilability(internal::Validated_mesh(true), result, input, np, np_input);
 }
 
 /// \ingroup PkgTilableSurfacesRef

@@ -90,18 +90,18 @@ struct Optimization_setup
   std::vector<Eigen::Matrix3d> metric;
 
   template <typename PolygonMesh, typename NamedParameters>
-  Optimization_setup(const PolygonMesh& pm, const NamedParameters& np)
+  Optimization_setup(Validated_mesh, const PolygonMesh& pm, const NamedParameters& np)
   {
     using parameters::choose_parameter;
     using parameters::get_parameter;
     namespace TS_np = CGAL::Tilable_surfaces::internal_np;
     typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
 
-    validate_quad_mesh(pm, np);
     problem = make_tilable_problem(pm, np);
     solver = choose_parameter(get_parameter(np, TS_np::solver), defaults::solver);
     const bool gauss_newton = (solver == CONSTRAINED_GAUSS_NEWTON);
-    settings.weights.distance = choose_parameter(get_parameter(np, TS_np::distance_weight), defaults::distance_weight);
+    settings.weights.distance =
+      choose_parameter(get_parameter(np, TS_np::distance_weight), defaults::distance_weight);
     settings.weights.fairness = choose_parameter(get_parameter(np, TS_np::fairness_weight),
                                                  default_fairness_weight(solver));
     const double tangential = choose_parameter(get_parameter(np, TS_np::tangential_weight),
@@ -110,11 +110,12 @@ struct Optimization_setup
                                                    defaults::edge_length_weight);
     settings.weights.diagonal = choose_parameter(get_parameter(np, TS_np::diagonal_weight),
                                                 defaults::diagonal_weight);
-    settings.weights.volume = choose_parameter(get_parameter(np, TS_np::volume_weight), defaults::volume_weight);
+    settings.weights.volume =
+      choose_parameter(get_parameter(np, TS_np::volume_weight), defaults::volume_weight);
     settings.congruence_tolerance = choose_parameter(get_parameter(np, TS_np::congruence_tolerance),
                                                      defaults::congruence_tolerance);
-    settings.convergence_tolerance =
-      choose_parameter(get_parameter(np, TS_np::convergence_tolerance), default_convergence_tolerance(solver));
+    settings.convergence_tolerance = choose_parameter(get_parameter(np, TS_np::convergence_tolerance),
+                                                      default_convergence_tolerance(solver));
     settings.max_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
                                                default_number_of_iterations(solver));
 
@@ -151,6 +152,62 @@ struct Optimization_setup
 
   Solver_input input() const { return Solver_input{problem, D, X0, fixed, metric}; }
 };
+
+// optimize_tilable_surface() on a mesh validate_quad_mesh() accepted.
+template <class PolygonMesh, typename NamedParameters>
+Optimization_result optimize_tilable_surface(Validated_mesh, PolygonMesh& pm, const NamedParameters& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename GetVertexPointMap<PolygonMesh, NamedParameters>::type VertexPointMap;
+  typedef typename boost::property_traits<VertexPointMap>::value_type Point;
+
+  Optimization_result result;
+  CGAL::Real_timer timer;
+  timer.start();
+  const Optimization_setup setup(Validated_mesh(true), pm, np);
+  const Tilable_problem& problem = setup.problem;
+  const Solver_settings& settings = setup.settings;
+  const Point_matrix& X0 = setup.X0;
+  const std::vector<bool>& fixed = setup.fixed;
+  const double scale = setup.scale;
+  const auto vim = CGAL::get_initialized_vertex_index_map(pm, np);
+  result.setup_time = timer.time();
+
+  timer.reset();
+  auto&& visitor = visitor_of(np);
+  Point_matrix X;
+  const Solver_report report =
+    setup.solver == CONSTRAINED_GAUSS_NEWTON
+      ? constrained_gauss_newton(setup.input(), settings, X, visitor)
+      : polak_ribiere(setup.input(), settings, X, visitor);
+  result.iterations = report.iterations;
+  result.stopped_by_visitor = report.stopped_by_visitor;
+  result.objective = report.objective;
+  result.energy = paper_energy(problem, setup.D, X, X0);
+
+  VertexPointMap vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                        get_property_map(CGAL::vertex_point, pm));
+  Point_matrix moved = problem.points;
+  for(vertex_descriptor v : vertices(pm))
+  {
+    const std::size_t i = get(vim, v);
+    const Eigen::RowVector3d displacement = X.row(i) - X0.row(i);
+    if(fixed[i] || displacement.isZero(0))
+      continue;
+    moved.row(i) += scale * displacement;
+    put(vpm, v, Point(moved(i, 0), moved(i, 1), moved(i, 2)));
+  }
+  result.solve_time = timer.time();
+
+  timer.reset();
+  result.measure = measure_tilability(problem, setup.D, problem.points, moved);
+  result.converged = result.measure.congruence_error <= settings.congruence_tolerance &&
+                     (!problem.planar || result.measure.planarity_error <= settings.congruence_tolerance);
+  result.measure_time = timer.time();
+  return result;
+}
 
 } // namespace internal
 
@@ -221,57 +278,8 @@ struct Optimization_setup
 template <class PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 Optimization_result optimize_tilable_surface(PolygonMesh& pm, const CGAL_NP_CLASS& np)
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  namespace TS_np = CGAL::Tilable_surfaces::internal_np;
-  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
-  typedef typename GetVertexPointMap<PolygonMesh, CGAL_NP_CLASS>::type VertexPointMap;
-  typedef typename boost::property_traits<VertexPointMap>::value_type Point;
-
-  Optimization_result result;
-  CGAL::Real_timer timer;
-  timer.start();
-  const internal::Optimization_setup setup(pm, np);
-  const internal::Tilable_problem& problem = setup.problem;
-  const internal::Solver_settings& settings = setup.settings;
-  const internal::Point_matrix& X0 = setup.X0;
-  const std::vector<bool>& fixed = setup.fixed;
-  const double scale = setup.scale;
-  const auto vim = CGAL::get_initialized_vertex_index_map(pm, np);
-  result.setup_time = timer.time();
-
-  timer.reset();
-  auto&& visitor = internal::visitor_of(np);
-  internal::Point_matrix X;
-  const internal::Solver_report report =
-    setup.solver == CONSTRAINED_GAUSS_NEWTON
-      ? internal::constrained_gauss_newton(setup.input(), settings, X, visitor)
-      : internal::polak_ribiere(setup.input(), settings, X, visitor);
-  result.iterations = report.iterations;
-  result.stopped_by_visitor = report.stopped_by_visitor;
-  result.objective = report.objective;
-  result.energy = internal::paper_energy(problem, setup.D, X, X0);
-
-  VertexPointMap vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                        get_property_map(CGAL::vertex_point, pm));
-  internal::Point_matrix moved = problem.points;
-  for(vertex_descriptor v : vertices(pm))
-  {
-    const std::size_t i = get(vim, v);
-    const Eigen::RowVector3d displacement = X.row(i) - X0.row(i);
-    if(fixed[i] || displacement.isZero(0))
-      continue;
-    moved.row(i) += scale * displacement;
-    put(vpm, v, Point(moved(i, 0), moved(i, 1), moved(i, 2)));
-  }
-  result.solve_time = timer.time();
-
-  timer.reset();
-  result.measure = internal::measure_tilability(problem, setup.D, problem.points, moved);
-  result.converged = result.measure.congruence_error <= settings.congruence_tolerance &&
-                     (!problem.planar || result.measure.planarity_error <= settings.congruence_tolerance);
-  result.measure_time = timer.time();
-  return result;
+  validate_quad_mesh(pm, np);
+  return internal::optimize_tilable_surface(internal::Validated_mesh(true), pm, np);
 }
 
 /// \ingroup PkgTilableSurfacesRef
@@ -290,6 +298,24 @@ struct Displacement_prediction
   double max_euclidean = 0;
 };
 
+namespace internal {
+
+// predict_displacement() on a mesh validate_quad_mesh() accepted.
+template <class PolygonMesh, typename NamedParameters>
+Displacement_prediction predict_displacement(Validated_mesh, const PolygonMesh& pm, const NamedParameters& np)
+{
+  const Optimization_setup setup(Validated_mesh(true), pm, np);
+  const Displacement_estimate e =
+    linearized_displacement(setup.input(), setup.settings);
+  Displacement_prediction p;
+  p.max = e.max;
+  p.rms = e.rms;
+  p.max_euclidean = e.step.rowwise().norm().maxCoeff();
+  return p;
+}
+
+} // namespace internal
+
 /// \ingroup PkgTilableSurfacesRef
 /// Predicts how far the default solver of `optimize_tilable_surface()` will
 /// move `pm` to make it tilable by the clustering in `np`, without moving
@@ -304,14 +330,8 @@ struct Displacement_prediction
 template <class PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 Displacement_prediction predict_displacement(const PolygonMesh& pm, const CGAL_NP_CLASS& np)
 {
-  const internal::Optimization_setup setup(pm, np);
-  const internal::Displacement_estimate e =
-    internal::linearized_displacement(setup.input(), setup.settings);
-  Displacement_prediction p;
-  p.max = e.max;
-  p.rms = e.rms;
-  p.max_euclidean = e.step.rowwise().norm().maxCoeff();
-  return p;
+  validate_quad_mesh(pm, np);
+  return internal::predict_displacement(internal::Validated_mesh(true), pm, np);
 }
 
 } // namespace Tilable_surfaces

@@ -353,6 +353,18 @@ face_edge_halfedges(typename boost::graph_traits<PolygonMesh>::face_descriptor f
   return h;
 }
 
+namespace internal {
+
+// The vertex point map of `np`, else the mesh's own, read only.
+template <typename PolygonMesh, typename NamedParameters>
+auto const_vertex_point_map(const PolygonMesh& pm, const NamedParameters& np)
+{
+  return parameters::choose_parameter(parameters::get_parameter(np, CGAL::internal_np::vertex_point),
+                                      get_const_property_map(CGAL::vertex_point, pm));
+}
+
+} // namespace internal
+
 /// \ingroup PkgTilableSurfacesRef
 /// The corners of face `f` of `pm` in the labelling of a template matched
 /// with orientation `o`: corner `i` is the face's vertex `o(i)`, the face's
@@ -371,10 +383,7 @@ Quad face_quad(typename boost::graph_traits<PolygonMesh>::face_descriptor f,
                Quad_orientation o = Quad_orientation(),
                const CGAL_NP_CLASS& np = parameters::default_values())
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, pm));
+  const auto vpm = internal::const_vertex_point_map(pm, np);
   Quad face_order;
   int n = 0;
   for(auto v : CGAL::vertices_around_face(halfedge(f, pm), pm))
@@ -395,10 +404,7 @@ template <typename PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 double mean_edge_length(const PolygonMesh& pm,
                         const CGAL_NP_CLASS& np = parameters::default_values())
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, pm));
+  const auto vpm = internal::const_vertex_point_map(pm, np);
   double sum = 0;
   std::size_t count = 0;
   for(auto e : edges(pm))

@@ -31,6 +31,14 @@ namespace Tilable_surfaces {
 
 namespace internal {
 
+// Tag of the internal entry points that skip validate_quad_mesh(): the mesh
+// passed with it was accepted by it (the public functions check first, the
+// stateful K_set_tilable_surface once, in its constructor).
+struct Validated_mesh
+{
+  explicit Validated_mesh(bool) {}
+};
+
 // CGAL::Polyhedron_3 gives edge indices only through halfedge ids: its items
 // must be CGAL::Polyhedron_items_with_id_3 (or others with ids).
 template <typename Halfedge, typename = void>
@@ -223,10 +231,7 @@ template <typename PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 void validate_quad_mesh(const PolygonMesh& pm,
                         const CGAL_NP_CLASS& np = parameters::default_values())
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, pm));
+  const auto vpm = internal::const_vertex_point_map(pm, np);
 
   if(faces(pm).empty())
     throw Invalid_input("the mesh has no face");

@@ -186,7 +186,8 @@ inline PLY_header read_PLY_header(std::istream& in, std::size_t size)
     if(t[0] == "format" && t.size() >= 2)
       header.format = t[1];
     else if(t[0] == "element" && t.size() >= 3)
-      header.elements.push_back(PLY_element{t[1], parse_count(t[2], size, size, "the PLY " + t[1] + " count"), {}});
+      header.elements.push_back(
+        PLY_element{t[1], parse_count(t[2], size, size, "the PLY " + t[1] + " count"), {}});
     else if(t[0] == "property" && !header.elements.empty() && t.size() >= 3)
     {
       PLY_property p;
@@ -203,7 +204,8 @@ inline PLY_header read_PLY_header(std::istream& in, std::size_t size)
     else
       throw File_error("the PLY header has an unexpected line '" + line + "'");
   }
-  if(header.format != "ascii" && header.format != "binary_little_endian" && header.format != "binary_big_endian")
+  if(header.format != "ascii" && header.format != "binary_little_endian" &&
+     header.format != "binary_big_endian")
     throw File_error("the PLY format is '" + header.format + "', not ascii or binary");
   return header;
 }

@@ -135,8 +135,7 @@ bool write_tiled_OBJ(std::ostream& os, const PolygonMesh& pm, const std::string&
   typedef typename boost::graph_traits<PolygonMesh>::face_descriptor face_descriptor;
 
   const auto clusters = get_parameter(np, internal_np::face_cluster);
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, pm));
+  const auto vpm = Tilable_surfaces::internal::const_vertex_point_map(pm, np);
 
   // The faces cluster by cluster, checked before anything is written.
   std::vector<std::pair<std::size_t, face_descriptor> > by_cluster;

@@ -59,10 +59,11 @@ bool write_tiled_PLY(std::ostream& os, const PolygonMesh& pm,
 
   const auto clusters = get_parameter(np, internal_np::face_cluster);
   const auto orientations = get_parameter(np, internal_np::face_orientation);
-  const bool binary = choose_parameter(get_parameter(np, CGAL::internal_np::use_binary_mode), defaults::use_binary_mode);
-  const int precision = choose_parameter(get_parameter(np, CGAL::internal_np::stream_precision), defaults::stream_precision);
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, pm));
+  const bool binary =
+    choose_parameter(get_parameter(np, CGAL::internal_np::use_binary_mode), defaults::use_binary_mode);
+  const int precision =
+    choose_parameter(get_parameter(np, CGAL::internal_np::stream_precision), defaults::stream_precision);
+  const auto vpm = Tilable_surfaces::internal::const_vertex_point_map(pm, np);
 
   validate_quad_mesh(pm, np);
   Tilable_surfaces::internal::check_face_labels(pm, CGAL::get_initialized_face_index_map(pm, np),

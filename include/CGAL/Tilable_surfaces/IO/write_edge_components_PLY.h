@@ -53,9 +53,9 @@ bool write_edge_components_PLY(std::ostream& os, const PolygonMesh& pm,
   using parameters::get_parameter;
   typedef CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> Output_mesh;
   typedef Output_mesh::Point Point;
-  const auto vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                    get_const_property_map(CGAL::vertex_point, pm));
-  const bool binary = choose_parameter(get_parameter(np, CGAL::internal_np::use_binary_mode), defaults::use_binary_mode);
+  const auto vpm = Tilable_surfaces::internal::const_vertex_point_map(pm, np);
+  const bool binary =
+    choose_parameter(get_parameter(np, CGAL::internal_np::use_binary_mode), defaults::use_binary_mode);
   validate_quad_mesh(pm, np);
 
   std::size_t number_of_components = 0;

@@ -96,8 +96,8 @@ inline Quad instance(const Tilable_problem& problem, const Point_matrix& points,
 
 // The clustering of `pm` read from the named parameters `face_cluster_map`
 // and `face_orientation_map` (both required), with K = 1 + the largest id.
-// Throws Invalid_input for missing maps, ids out of range or non-quad faces;
-// the mesh itself is checked by validate_quad_mesh() beforehand.
+// Throws Invalid_input for ids or orientations out of range; the mesh itself
+// is checked by validate_quad_mesh() beforehand.
 template <typename PolygonMesh, typename NamedParameters>
 Tilable_problem make_tilable_problem(const PolygonMesh& pm, const NamedParameters& np)
 {
@@ -106,22 +106,18 @@ Tilable_problem make_tilable_problem(const PolygonMesh& pm, const NamedParameter
   require_face_maps<NamedParameters>();
   const auto cluster_map = get_parameter(np, TS_np::face_cluster);
   const auto orientation_map = get_parameter(np, TS_np::face_orientation);
-  const auto vpm = parameters::choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                                get_const_property_map(CGAL::vertex_point, pm));
+  const auto vpm = internal::const_vertex_point_map(pm, np);
   const auto vim = CGAL::get_initialized_vertex_index_map(pm, np);
+  const auto fim = CGAL::get_initialized_face_index_map(pm, np);
 
   Tilable_problem problem;
   problem.allow_mirror = parameters::choose_parameter(get_parameter(np, TS_np::orientation_policy),
                                                       defaults::orientation_policy) == ALLOW_MIRRORED_PANELS;
-  problem.planar = parameters::choose_parameter(get_parameter(np, TS_np::planar_tiles), defaults::planar_tiles);
-  long long largest = -1;
-  for(auto f : faces(pm))
-    largest = (std::max)(largest, static_cast<long long>(get(cluster_map, f)));
-
-  problem.number_of_clusters = std::size_t(largest + 1);
-  // The graph checks the ranges of clusters and orientations.
-  const Edge_sharing_graph<PolygonMesh> graph(pm, problem.number_of_clusters, cluster_map,
-                                              orientation_map, np);
+  problem.planar =
+    parameters::choose_parameter(get_parameter(np, TS_np::planar_tiles), defaults::planar_tiles);
+  const Face_clustering clustering = read_face_clustering(pm, fim, cluster_map, orientation_map);
+  problem.number_of_clusters = clustering.number_of_clusters;
+  const Edge_sharing_graph<PolygonMesh> graph(Validated_mesh(true), pm, fim, vpm, clustering);
   problem.degree_of_flexibility = graph.degree_of_flexibility();
   problem.points = read_points(pm, vpm, vim);
 
@@ -131,10 +127,11 @@ Tilable_problem make_tilable_problem(const PolygonMesh& pm, const NamedParameter
     int n = 0;
     for(auto v : CGAL::vertices_around_face(halfedge(f, pm), pm))
       face_order[n++] = int(get(vim, v));
-    const Quad_orientation o(static_cast<int>(get(orientation_map, f)));
+    const std::size_t i = get(fim, f);
+    const Quad_orientation o = clustering.orientation[i];
     problem.face_corners.push_back({{face_order[o(0)], face_order[o(1)],
                                      face_order[o(2)], face_order[o(3)]}});
-    problem.face_cluster.push_back(std::size_t(get(cluster_map, f)));
+    problem.face_cluster.push_back(clustering.label[i]);
   }
 
   std::vector<std::vector<std::array<int, 4>>> by_component(problem.degree_of_flexibility);

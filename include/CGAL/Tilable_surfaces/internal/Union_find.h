@@ -13,6 +13,7 @@
 
 #include <array>
 #include <cstddef>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -74,15 +75,15 @@ template <std::size_t N>
 class Small_union_find
 {
 public:
-  // The slot of `id`, given on first sight.
-  std::size_t slot(std::size_t id)
+  // The slot of `id`, given on first sight, and whether this was the first.
+  std::pair<std::size_t, bool> slot(std::size_t id)
   {
     for(std::size_t i = 0; i < m_size; ++i)
       if(m_id[i] == id)
-        return i;
+        return {i, false};
     m_id[m_size] = id;
     m_sets.make_set(m_size);
-    return m_size++;
+    return {m_size++, true};
   }
 
   // The number of ids seen.

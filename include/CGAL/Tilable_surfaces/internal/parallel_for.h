@@ -49,9 +49,9 @@ void parallel_for(std::size_t n, const Body& body)
 template <typename ConcurrencyTag, typename F>
 void run_with_concurrency(const F& f)
 {
+  // (CGAL::Parallel_if_available_tag is one of the two.)
   static_assert(std::is_same<ConcurrencyTag, CGAL::Sequential_tag>::value ||
-                std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value ||
-                std::is_same<ConcurrencyTag, CGAL::Parallel_if_available_tag>::value,
+                std::is_same<ConcurrencyTag, CGAL::Parallel_tag>::value,
                 "ConcurrencyTag must be CGAL::Sequential_tag, CGAL::Parallel_tag or "
                 "CGAL::Parallel_if_available_tag");
 #ifdef CGAL_LINKED_WITH_TBB

@@ -39,7 +39,9 @@ CGAL_TS_add_named_parameter(feature_angle_t, feature_angle, feature_angle)
 CGAL_TS_add_named_parameter(tangential_weight_t, tangential_weight, tangential_weight)
 
 // fidelity search (K_set_tilable_surface::optimize_closest())
-CGAL_TS_add_named_parameter(number_of_optimized_candidates_t, number_of_optimized_candidates, number_of_optimized_candidates)
-CGAL_TS_add_named_parameter(number_of_improvement_rounds_t, number_of_improvement_rounds, number_of_improvement_rounds)
+CGAL_TS_add_named_parameter(number_of_optimized_candidates_t, number_of_optimized_candidates,
+                            number_of_optimized_candidates)
+CGAL_TS_add_named_parameter(number_of_improvement_rounds_t, number_of_improvement_rounds,
+                            number_of_improvement_rounds)
 CGAL_TS_add_named_parameter(planar_tiles_t, planar_tiles, planar_tiles)
 CGAL_TS_add_named_parameter(max_deviation_t, max_deviation, max_deviation)

@@ -115,12 +115,8 @@ edge_sharing_graph(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
                    const std::vector<std::size_t>& label,
                    const std::vector<Quad_orientation>& orientation, std::size_t k)
 {
-  std::vector<int> o(orientation.size());
-  for(std::size_t f = 0; f < o.size(); ++f) o[f] = orientation[f].index();
-  return Edge_sharing_graph<PolygonMesh>(
-    Validated_mesh(true), pm, k, boost::make_iterator_property_map(label.begin(), fim),
-    boost::make_iterator_property_map(o.begin(), fim),
-    CGAL::parameters::face_index_map(fim).vertex_point_map(vpm));
+  return Edge_sharing_graph<PolygonMesh>(Validated_mesh(true), pm, fim, vpm,
+                                         Face_clustering{label, orientation, k});
 }
 
 // The squared deviations of all the edge lengths of `pm` from their mean:

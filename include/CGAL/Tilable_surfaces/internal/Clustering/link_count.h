@@ -26,7 +26,7 @@ inline std::size_t number_of_joins(const std::array<std::pair<std::size_t, std::
   std::size_t joins = 0;
   for(std::size_t i = 0; i < count; ++i)
   {
-    const std::size_t a = components.slot(links[i].first), b = components.slot(links[i].second);
+    const std::size_t a = components.slot(links[i].first).first, b = components.slot(links[i].second).first;
     if(components.sets().unite(a, b))
       ++joins;
   }

@@ -12,6 +12,7 @@
 #include <CGAL/Tilable_surfaces/internal/Clustering/fast_match.h>
 #include <CGAL/Tilable_surfaces/internal/parallel_for.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
@@ -36,22 +37,41 @@ inline Quad centred(Quad q)
   return q;
 }
 
-// The mean shape of quads[members[i]], centred at the origin. With
-// `orientations`, instance i is taken in the labelling orientations[i] (only
-// the rigid fit is searched); otherwise the best orientation is searched too,
-// starting from the first member as reference.
+// How far the corners of `b` are from those of `a`, relative to the size of
+// `a` (0 when they coincide, even for a degenerate `a`).
+inline double relative_move(const Quad& a, const Quad& b)
+{
+  double change = 0, size = 0;
+  for(int k = 0; k < 4; ++k)
+  {
+    change = (std::max)(change, (b[k] - a[k]).norm());
+    size = (std::max)(size, (a[k] - a[0]).norm());
+  }
+  return change == 0 ? 0.0 : change / size;
+}
+
+// The mean shape of quads[members[i]], centred at the origin: the package's
+// one Procrustes mean. With `orientations`, instance i is taken in the
+// labelling orientations[i] (only the rigid fit is searched, a mirror too under
+// ALLOW_MIRRORED_PANELS); otherwise the best orientation is searched too,
+// starting from the first member as reference. At most `max_passes` passes;
+// with a `tolerance`, they stop once the mean moves by at most that fraction
+// of its size. The clustering takes 3 passes: the mean only has to rank and
+// match shapes there. The measure runs to 1e-14: its error is judged against
+// the mean, and congruent instances give it exactly.
 inline Quad procrustes_mean(const std::vector<Quad>& quads,
                             const std::vector<std::size_t>& members,
                             Orientation_policy policy,
                             const std::vector<Quad_orientation>* orientations = nullptr,
-                            int iterations = 3)
+                            int max_passes = 3, double tolerance = 0)
 {
   const std::size_t m = members.size();
   Quad reference = centred(orientations ? reoriented(quads[members[0]], (*orientations)[0])
                                         : quads[members[0]]);
   const bool allow_mirror = (policy == ALLOW_MIRRORED_PANELS);
   std::vector<Quad> aligned(m);
-  for(int it = 0; it < iterations; ++it)
+  bool moving = true;
+  for(int pass = 0; pass < max_passes && moving; ++pass)
   {
     parallel_for(m, [&](std::size_t i) {
       const Quad& q = quads[members[i]];
@@ -71,9 +91,23 @@ inline Quad procrustes_mean(const std::vector<Quad>& quads,
     for(const Quad& a : aligned)
       for(int k = 0; k < 4; ++k) mean[k] += a[k];
     for(auto& p : mean) p /= double(m);
-    reference = centred(mean);
+    mean = centred(mean);
+    moving = relative_move(reference, mean) > tolerance;
+    reference = mean;
   }
   return reference;
+}
+
+// The S-quad of instances congruent up to proper rigid motions (and mirrors
+// with `allow_mirror`), in their labelling: their Procrustes mean, to
+// convergence.
+inline Quad converged_procrustes_mean(const std::vector<Quad>& instances, bool allow_mirror)
+{
+  std::vector<std::size_t> members(instances.size());
+  for(std::size_t i = 0; i < members.size(); ++i) members[i] = i;
+  const std::vector<Quad_orientation> as_labelled(instances.size());
+  return procrustes_mean(instances, members, allow_mirror ? ALLOW_MIRRORED_PANELS : PROPER_RIGID_MOTIONS,
+                         &as_labelled, 10, 1e-14);
 }
 
 } // namespace internal

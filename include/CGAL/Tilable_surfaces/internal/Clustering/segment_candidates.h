@@ -269,7 +269,8 @@ inline Eigen::Matrix<double, 6, 1> reoriented(const Eigen::Matrix<double, 6, 1>&
 // group in the corner order of its first column, the others matched to it
 // on the middle row. On a section symmetric by a plane the mirror columns
 // pair up first.
-inline std::vector<std::size_t> group_columns(const Quad_grid& grid, std::size_t groups, Orientation_policy policy)
+inline std::vector<std::size_t> group_columns(const Quad_grid& grid, std::size_t groups,
+                                              Orientation_policy policy)
 {
   typedef Eigen::Matrix<double, 6, 1> Distances;
   const std::size_t rows = grid.rows, columns = grid.columns, middle = rows / 2;
@@ -315,7 +316,8 @@ inline std::vector<std::size_t> group_columns(const Quad_grid& grid, std::size_t
     parent[removed] = kept;
     for(std::size_t c = 0; c < columns; ++c)
       if(parent[c] == c && c != kept)
-        cost[(std::min)(c, kept) * columns + (std::max)(c, kept)] = c < kept ? increase(c, kept) : increase(kept, c);
+        cost[(std::min)(c, kept) * columns + (std::max)(c, kept)] =
+          c < kept ? increase(c, kept) : increase(kept, c);
   }
   std::vector<std::size_t> group(columns);
   for(std::size_t c = 0; c < columns; ++c)
@@ -337,8 +339,8 @@ inline std::vector<std::size_t> group_columns(const Quad_grid& grid, std::size_t
 // section and tie the lengths of the whole chain together, which the
 // per-run cost does not see. A band or a one-row segment between them lets
 // the section change.
-inline std::vector<std::size_t> best_runs(const Quad_grid& grid, const std::vector<const Run_option*>& options,
-                                          std::size_t k)
+inline std::vector<std::size_t> best_runs(const Quad_grid& grid,
+                                          const std::vector<const Run_option*>& options, std::size_t k)
 {
   const std::size_t rows = grid.rows;
   const double infinity = (std::numeric_limits<double>::max)();

@@ -96,7 +96,8 @@ std::array<std::vector<std::size_t>, 2> quad_strips(const PolygonMesh& pm, FaceI
   auto node = [&](typename boost::graph_traits<PolygonMesh>::halfedge_descriptor h) {
     const auto f = face(h, pm);
     const auto face_edges = face_edge_halfedges(f, pm);
-    const std::size_t j = std::size_t(std::find(face_edges.begin(), face_edges.end(), h) - face_edges.begin());
+    const std::size_t j =
+      std::size_t(std::find(face_edges.begin(), face_edges.end(), h) - face_edges.begin());
     return 2 * std::size_t(get(fim, f)) + j % 2;
   };
   for(auto e : edges(pm))

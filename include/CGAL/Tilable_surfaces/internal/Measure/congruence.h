@@ -10,6 +10,7 @@
 // the S-quad onto it: a proper one, or either kind when the problem allows
 // mirrored panels.
 
+#include <CGAL/Tilable_surfaces/internal/Clustering/s_quad_template.h>
 #include <CGAL/Tilable_surfaces/internal/Tilable_problem.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 
@@ -19,37 +20,6 @@
 namespace CGAL {
 namespace Tilable_surfaces {
 namespace internal {
-
-// Generalized Procrustes mean under proper rigid motions (and mirrors with
-// `allow_mirror`): align every instance onto the current mean, average,
-// repeat until the mean stops moving. Exact (one pass) when the instances are
-// congruent.
-inline Quad procrustes_mean(const std::vector<Quad>& instances, bool allow_mirror = false)
-{
-  Quad mean = instances.front();
-  for(int pass = 0; pass < 10; ++pass)
-  {
-    Quad sum{{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
-              Eigen::Vector3d::Zero()}};
-    for(const Quad& q : instances)
-    {
-      const Quad aligned = best_rigid_fit(q, mean, allow_mirror)(q);
-      for(int i = 0; i < 4; ++i)
-        sum[i] += aligned[i];
-    }
-    double change = 0, size = 0;
-    for(int i = 0; i < 4; ++i)
-    {
-      sum[i] /= double(instances.size());
-      change = (std::max)(change, (sum[i] - mean[i]).norm());
-      size = (std::max)(size, (mean[i] - mean[0]).norm());
-    }
-    mean = sum;
-    if(change <= 1e-14 * size)
-      break;
-  }
-  return mean;
-}
 
 // `q` moved rigidly so that t0 is at the origin, t1 on the +x axis and t2 in
 // the xy plane with y >= 0 (a proper motion: the signed volume is kept).
@@ -93,7 +63,7 @@ inline Cluster_congruence cluster_congruence(const Tilable_problem& problem, con
     result.sizes[c] = members[c].size();
     if(members[c].empty())
       continue;
-    const Quad mean = procrustes_mean(members[c], problem.allow_mirror);
+    const Quad mean = converged_procrustes_mean(members[c], problem.allow_mirror);
     result.s_quads[c] = canonical_frame(mean);
     // The mold of a planar S-quad is its own mirror image.
     const bool count_mirrored =

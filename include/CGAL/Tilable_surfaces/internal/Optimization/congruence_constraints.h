@@ -56,8 +56,10 @@ class Congruence_constraints
   static constexpr int max_hessian_entries = 288;
 
 public:
-  Congruence_constraints(const Tilable_problem& problem, double ell, Volume_quantity volume = SCALE_FREE_VOLUME)
-    : m_ell(ell), m_volume(volume)
+  Congruence_constraints(const Tilable_problem& problem, double ell,
+                         Volume_quantity volume = SCALE_FREE_VOLUME)
+    : m_ell(ell)
+    , m_volume(volume)
   {
     auto add = [&](Quantity_kind kind, const Equality_groups& groups) {
       for(std::size_t g = 0; g < groups.number_of_groups(); ++g)
@@ -70,7 +72,8 @@ public:
     if(problem.planar)
       for(std::size_t g = 0; g < problem.volume_groups.number_of_groups(); ++g)
         if(problem.volume_groups.begin[g] < problem.volume_groups.begin[g + 1])
-          m_rows.push_back(Row{SIGNED_VOLUME, &problem.volume_groups.items[problem.volume_groups.begin[g]], nullptr});
+          m_rows.push_back(
+            Row{SIGNED_VOLUME, &problem.volume_groups.items[problem.volume_groups.begin[g]], nullptr});
   }
 
   int number_of_rows() const { return int(m_rows.size()); }

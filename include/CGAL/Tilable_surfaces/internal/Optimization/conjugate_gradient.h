@@ -121,8 +121,9 @@ Solver_report polak_ribiere(const Solver_input& in, const Solver_settings& setti
     if(2 * std::abs(f_old - f) <= settings.convergence_tolerance * (std::abs(f_old) + std::abs(f) + 1e-300))
       break;
   }
-  report.congruence_error = congruence_error(in.problem, X);
+  // The loop may end before its first evaluation (a zero gradient).
   report.objective = f;
+  report.congruence_error = congruence_error(in.problem, X);
   return report;
 }
 

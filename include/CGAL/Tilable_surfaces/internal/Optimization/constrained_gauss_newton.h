@@ -214,10 +214,13 @@ private:
   // false when it cannot be.
   bool factorize_shifted(const Matrix& K, double& shift)
   {
-    Matrix identity(m_n, m_n);
-    identity.setIdentity();
+    if(m_identity.rows() != m_n)
+    {
+      m_identity.resize(m_n, m_n);
+      m_identity.setIdentity();
+    }
     shift = shift == 0 ? 0 : (std::max)(shift / T::shift_decay, T::min_shift);
-    while(!m_solver.factorize(Matrix(K + shift * identity)) && shift < T::max_shift)
+    while(!m_solver.factorize(Matrix(K + shift * m_identity)) && shift < T::max_shift)
       shift = shift == 0 ? T::first_shift : T::shift_growth * shift;
     return m_solver.positive_definite() && shift < T::max_shift;
   }
@@ -230,7 +233,8 @@ private:
   {
     const Matrix& H = m_objective.hessian();
     const double b = kkt_regularization();
-    double nu = 0, radius = T::initial_radius, shift = 0, best_error = std::numeric_limits<double>::infinity();
+    double nu = 0, radius = T::initial_radius, shift = 0,
+           best_error = std::numeric_limits<double>::infinity();
     int iterations_since_best = 0;
     Eigen::VectorXd lambda = Eigen::VectorXd::Zero(m_c.size());
     while(m_it < m_settings.max_iterations)
@@ -253,14 +257,16 @@ private:
         best_error = error;
         iterations_since_best = 0;
       }
-      else if(++iterations_since_best >= (m_exact_hessian ? T::exact_hessian_patience : T::gauss_newton_patience))
+      else if(++iterations_since_best >=
+              (m_exact_hessian ? T::exact_hessian_patience : T::gauss_newton_patience))
         break;
       // With the exact Hessian, inexact multiplier passes warm-started from the
       // previous multipliers, with a relative accuracy that tightens as |c|
       // falls, keep the local convergence quadratic. Gauss-Newton converges
       // linearly anyway; there, passes from zero at a fixed accuracy measured
       // as good or better (decocube K = 15: 10 iterations instead of 44).
-      const double eta = m_exact_hessian ? (std::min)(T::multiplier_accuracy, residual) : T::multiplier_accuracy;
+      const double eta =
+        m_exact_hessian ? (std::min)(T::multiplier_accuracy, residual) : T::multiplier_accuracy;
       Eigen::VectorXd lambda_trial = m_exact_hessian ? lambda : Eigen::VectorXd::Zero(m_c.size());
       m_delta = kkt_step(Hd, m_c, lambda_trial, eta);
       nu = (std::max)(nu, 2 * lambda_trial.norm());
@@ -269,7 +275,8 @@ private:
         break;
       if(step.alpha == step.alpha_max)
         radius *= 2;
-      else if(m_variant == CAUTIOUS_GAUSS_NEWTON || m_variant == EXACT_HESSIAN || step.alpha < 0.5 * step.alpha_max)
+      else if(m_variant == CAUTIOUS_GAUSS_NEWTON || m_variant == EXACT_HESSIAN ||
+              step.alpha < 0.5 * step.alpha_max)
         radius = (std::max)(0.5 * radius, T::min_radius);
       // Multipliers of the full step; those of a shortened step are blended.
       lambda += (std::min)(step.alpha, 1.0) * (lambda_trial - lambda);
@@ -399,6 +406,7 @@ private:
   bool m_measured = false;
   Solver_report m_report;
   SPD_solver m_solver;
+  Matrix m_identity;  // n x n, made once for the shifts
   Matrix m_J;
   Eigen::VectorXd m_d, m_c, m_c_trial, m_delta;
 };

@@ -1,0 +1,125 @@
+// Copyright (c) 2026 Tilable_surfaces contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TILABLE_SURFACES_INTERNAL_FACE_CLUSTERING_H
+#define CGAL_TILABLE_SURFACES_INTERNAL_FACE_CLUSTERING_H
+
+// The clustered-mesh model every step works on: the cluster and S-quad
+// orientation of every face, by face index, and K. The maps a user passes are
+// read into it, and checked, in one place: read_face_clustering().
+
+#include <CGAL/Tilable_surfaces/exceptions.h>
+#include <CGAL/Tilable_surfaces/quad_shape.h>
+#include <CGAL/Tilable_surfaces/validation.h>
+
+#include <boost/graph/graph_traits.hpp>
+#include <boost/property_map/property_map.hpp>
+
+#include <algorithm>
+#include <cstddef>
+#include <limits>
+#include <string>
+#include <vector>
+
+namespace CGAL {
+namespace Tilable_surfaces {
+namespace internal {
+
+struct Face_clustering
+{
+  std::vector<std::size_t> label;
+  std::vector<Quad_orientation> orientation;
+  std::size_t number_of_clusters = 0;
+
+  // The faces of every cluster, in face-index order.
+  std::vector<std::vector<std::size_t> > members() const
+  {
+    std::vector<std::vector<std::size_t> > m(number_of_clusters);
+    for(std::size_t f = 0; f < label.size(); ++f)
+      m[label[f]].push_back(f);
+    return m;
+  }
+
+  std::vector<std::size_t> cluster_sizes() const
+  {
+    std::vector<std::size_t> sizes(number_of_clusters, 0);
+    for(std::size_t c : label)
+      ++sizes[c];
+    return sizes;
+  }
+
+  void check_cluster(std::size_t c) const
+  {
+    if(c >= number_of_clusters)
+      throw Invalid_input("no cluster " + std::to_string(c) + " (there are " +
+                          std::to_string(number_of_clusters) + ")", Invalid_input::PARAMETER);
+  }
+};
+
+// What read_face_clustering() requires of the ids beyond their range.
+enum Cluster_ids
+{
+  ANY_IDS,        // K = 1 + the largest id; some may be unused
+  CONTIGUOUS_IDS  // every id in 0..K-1 has a face
+};
+
+// K not known beforehand: 1 + the largest id read.
+constexpr std::size_t unknown_number_of_clusters = (std::numeric_limits<std::size_t>::max)();
+
+// Reads the clustering in `cluster_map` and `orientation_map`, checking every
+// id against `number_of_clusters` (if known) and every orientation against
+// 0..7, and, with CONTIGUOUS_IDS, that no id in 0..K-1 is unused.
+template <typename PolygonMesh, typename FaceIndexMap, typename ClusterMap, typename OrientationMap>
+Face_clustering read_face_clustering(const PolygonMesh& pm, FaceIndexMap fim, ClusterMap cluster_map,
+                                     OrientationMap orientation_map,
+                                     std::size_t number_of_clusters = unknown_number_of_clusters,
+                                     Cluster_ids ids = ANY_IDS)
+{
+  Face_clustering fc;
+  fc.label.resize(num_faces(pm));
+  fc.orientation.resize(num_faces(pm));
+  std::size_t largest = 0;
+  for(auto f : faces(pm))
+  {
+    const std::size_t i = std::size_t(get(fim, f));
+    const long long c = static_cast<long long>(get(cluster_map, f));
+    const long long o = static_cast<long long>(static_cast<int>(get(orientation_map, f)));
+    check_face_label(i, c, o, number_of_clusters);
+    fc.label[i] = std::size_t(c);
+    fc.orientation[i] = Quad_orientation(int(o));
+    largest = (std::max)(largest, std::size_t(c));
+  }
+  fc.number_of_clusters = number_of_clusters != unknown_number_of_clusters
+                            ? number_of_clusters
+                            : (fc.label.empty() ? 0 : largest + 1);
+  if(ids == CONTIGUOUS_IDS)
+  {
+    const std::vector<std::size_t> sizes = fc.cluster_sizes();
+    for(std::size_t c = 0; c < sizes.size(); ++c)
+      if(sizes[c] == 0)
+        throw Invalid_input("cluster " + std::to_string(c) + " has no face: the ids must be 0..K-1, all used",
+                            Invalid_input::PARAMETER);
+  }
+  return fc;
+}
+
+// Writes `fc` into the two maps, whatever their value types.
+template <typename PolygonMesh, typename FaceIndexMap, typename ClusterMap, typename OrientationMap>
+void write_face_clustering(const PolygonMesh& pm, FaceIndexMap fim, const Face_clustering& fc,
+                           ClusterMap cluster_map, OrientationMap orientation_map)
+{
+  typedef typename boost::property_traits<ClusterMap>::value_type Cluster_id;
+  typedef typename boost::property_traits<OrientationMap>::value_type Orientation;
+  for(auto f : faces(pm))
+  {
+    const std::size_t i = std::size_t(get(fim, f));
+    put(cluster_map, f, Cluster_id(fc.label[i]));
+    put(orientation_map, f, Orientation(fc.orientation[i].index()));
+  }
+}
+
+} // namespace internal
+} // namespace Tilable_surfaces
+} // namespace CGAL
+
+#endif // CGAL_TILABLE_SURFACES_INTERNAL_FACE_CLUSTERING_H

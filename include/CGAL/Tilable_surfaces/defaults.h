@@ -82,10 +82,14 @@ constexpr double similarity_threshold = 0.01;
 constexpr double flexibility_penalty = 0.5;
 /// `structure_penalty`.
 constexpr double structure_penalty = 1.0;
-/// `use_kmeans_candidate`, `use_auto_merge`, `use_strip_candidates`,
-/// `use_segment_candidates`: every kind of candidate clustering.
-constexpr bool use_kmeans_candidate = true, use_auto_merge = true;
-constexpr bool use_strip_candidates = true, use_segment_candidates = true;
+/// `use_kmeans_candidate`: every kind of candidate clustering is made.
+constexpr bool use_kmeans_candidate = true;
+/// `use_auto_merge`.
+constexpr bool use_auto_merge = true;
+/// `use_strip_candidates`.
+constexpr bool use_strip_candidates = true;
+/// `use_segment_candidates`.
+constexpr bool use_segment_candidates = true;
 /// `exact_clustering_limit`: the paper's largest mesh.
 constexpr std::size_t exact_clustering_limit = 1500;
 /// `clustering_path`.

@@ -139,7 +139,7 @@ std::vector<Entry_point> entry_points()
      [=](Case_input& in, std::ostream&) { TS::make_k_set_tilable(in.mesh, maps(in).number_of_tiles(1)); }},
     {"K_set_tilable_surface", true,
      [](Case_input& in, std::ostream&) {
-       TS::K_set_tilable_surface<Mesh> surface(in.mesh);
+       TS::K_set_tilable_surface surface(in.mesh);
        surface.set_clustering(in.cluster, in.orientation); }},
     {"IO::write_tiled_PLY", true,
      [=](Case_input& in, std::ostream& os) { TS::IO::write_tiled_PLY(os, in.mesh, maps(in)); }},

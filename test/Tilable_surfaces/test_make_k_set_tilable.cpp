@@ -14,6 +14,7 @@
 #include <map>
 #include <set>
 #include <string>
+#include <type_traits>
 #include <vector>
 
 
@@ -93,7 +94,7 @@ TEST(MakeKSetTilable, ErrorsLeaveTheMeshAndTheMapsUntouched)
 TEST(KSetTilableSurface, EditingReportsTheDegreeOfFlexibilityOfTheEditedClustering)
 {
   Mesh mesh = read("de_beers_ginza.off");
-  TS::K_set_tilable_surface<Mesh> surface(mesh);
+  TS::K_set_tilable_surface surface(mesh);
   EXPECT_THROW(surface.optimize(), TS::Invalid_input) << "no clustering yet";
   const TS::Clustering_result& c = surface.cluster(TSP::number_of_tiles(30));
   EXPECT_EQ(surface.number_of_clusters(), 30u);
@@ -124,7 +125,7 @@ TEST(KSetTilableSurface, EditingReportsTheDegreeOfFlexibilityOfTheEditedClusteri
 TEST(KSetTilableSurface, SetClusteringChecksTheMaps)
 {
   Mesh mesh = read("monkey_saddle.off");
-  TS::K_set_tilable_surface<Mesh> surface(mesh);
+  TS::K_set_tilable_surface surface(mesh);
   std::map<Mesh::Face_index, int> cluster, orientation;
   for(auto f : faces(mesh)) { cluster[f] = 0; orientation[f] = 0; }
   cluster[Mesh::Face_index(5)] = 2;  // id 1 unused
@@ -149,7 +150,7 @@ TEST(KSetTilableSurface, SetClusteringChecksTheMaps)
 TEST(KSetTilableSurface, MapsHandedOutStayValid)
 {
   Mesh mesh = read("monkey_saddle.off");
-  TS::K_set_tilable_surface<Mesh> surface(mesh);
+  TS::K_set_tilable_surface surface(mesh);
   const auto cluster = surface.face_cluster_map();
   const auto orientation = surface.face_orientation_map();
   std::map<Mesh::Face_index, int> parity, zero;
@@ -178,7 +179,7 @@ TEST(KSetTilableSurface, MapsHandedOutStayValid)
 TEST(KSetTilableSurface, EditsKeepTheCallersParameters)
 {
   Mesh mesh = read("monkey_saddle.off");
-  TS::K_set_tilable_surface<Mesh> surface(mesh);
+  TS::K_set_tilable_surface surface(mesh);
   const double threshold = 2.0; // every orientation within 2 mean edges is admissible
   surface.cluster(TSP::number_of_tiles(6).similarity_threshold(threshold).orientation_policy(TS::NO_TURNED_OVER_PANELS));
   std::map<Mesh::Face_index, int> cluster, orientation;
@@ -245,7 +246,7 @@ TEST(KSetTilableSurface, EditsReuseTheStateInsteadOfRereadingTheMesh)
   Mesh mesh = read("monkey_saddle.off");
   std::size_t reads = 0;
   const Counting_point_map vpm{&mesh, &reads};
-  TS::K_set_tilable_surface<Mesh, Counting_point_map> surface(mesh, vpm);
+  TS::K_set_tilable_surface surface(mesh, vpm);
   EXPECT_GE(reads, num_vertices(mesh)) << "the constructor reads the input";
   surface.cluster(TSP::number_of_tiles(6));
 
@@ -270,12 +271,16 @@ TEST(KSetTilableSurface, EditsReuseTheStateInsteadOfRereadingTheMesh)
 }
 
 // cluster() is its four stages in turn: run one by one, they build the same
-// pool and select the same clustering; out of order, they refuse.
+// pool and select the same clustering; out of order, they refuse. (The
+// whole run on one thread, the stages with the concurrency tag given first.)
 TEST(KSetTilableSurface, StagesOneByOneGiveWhatClusterGives)
 {
   Mesh mesh = read("monkey_saddle.off");
   const auto np = TSP::number_of_tiles(6).use_kmeans_candidate(true);
-  TS::K_set_tilable_surface<Mesh> whole(mesh), staged(mesh);
+  TS::K_set_tilable_surface whole(mesh);
+  static_assert(std::is_same<decltype(whole), TS::K_set_tilable_surface<CGAL::Sequential_tag, Mesh> >::value,
+                "deduced: one thread, the mesh's points");
+  TS::K_set_tilable_surface<CGAL::Parallel_if_available_tag, Mesh> staged(mesh);
   const TS::Clustering_result& expected = whole.cluster(np);
 
   EXPECT_THROW(staged.merge_to_tile_count(), TS::Invalid_input);
@@ -309,7 +314,7 @@ TEST(KSetTilableSurface, StagesOneByOneGiveWhatClusterGives)
 TEST(KSetTilableSurface, MergedGraphAndDescriptionAreThoseOfTheMergedClustering)
 {
   Mesh mesh = read("monkey_saddle.off");
-  TS::K_set_tilable_surface<Mesh> surface(mesh);
+  TS::K_set_tilable_surface surface(mesh);
   surface.cluster(TSP::number_of_tiles(8));
   for(auto pair : {std::make_pair(std::size_t(2), std::size_t(5)), std::make_pair(std::size_t(6), std::size_t(0))})
   {

@@ -77,18 +77,19 @@ inline bool is_better(const Optimization_result& a, const Optimization_result& b
 /// only the optimizing steps move; the connectivity must not change while the
 /// object is used.
 ///
+/// \tparam ConcurrencyTag `CGAL::Sequential_tag`, `CGAL::Parallel_tag` or
+///   `CGAL::Parallel_if_available_tag`: whether the steps may use several
+///   threads (TBB); the results are the same. First, as in
+///   Polygon_mesh_processing; class template argument deduction makes it
+///   `CGAL::Sequential_tag` when no argument is given:
+///   `K_set_tilable_surface surface(mesh);`, or
+///   `K_set_tilable_surface<CGAL::Parallel_if_available_tag, Mesh> surface(mesh);`.
 /// \tparam PolygonMesh a model of `FaceListGraph` and `MutableFaceGraph`
 ///   with quad faces.
 /// \tparam VertexPointMap a model of `ReadWritePropertyMap` from vertices to
 ///   points, by default the mesh's internal one.
-/// \tparam ConcurrencyTag `CGAL::Sequential_tag` (default),
-///   `CGAL::Parallel_tag` or `CGAL::Parallel_if_available_tag`: whether the
-///   steps may use several threads (TBB). The results are the same. Last, with
-///   a default, as in CGAL's `Variational_shape_approximation`: a class
-///   template cannot default a first parameter and deduce the others.
-template <typename PolygonMesh,
-          typename VertexPointMap = typename CGAL::GetVertexPointMap<PolygonMesh>::type,
-          typename ConcurrencyTag = CGAL::Sequential_tag>
+template <typename ConcurrencyTag, typename PolygonMesh,
+          typename VertexPointMap = typename CGAL::GetVertexPointMap<PolygonMesh>::type>
 class K_set_tilable_surface
 {
   typedef typename CGAL::GetInitializedFaceIndexMap<PolygonMesh>::const_type Face_index_map;
@@ -805,6 +806,15 @@ private:
   std::unique_ptr<Clusterer> m_clusterer;  // between initialize_clusters() and select_candidate()
   Optimization_result m_optimization;
 };
+
+/// \cond SKIP_IN_MANUAL
+// Without template arguments: one thread, the mesh's type and point map.
+template <typename PolygonMesh>
+K_set_tilable_surface(PolygonMesh&) -> K_set_tilable_surface<CGAL::Sequential_tag, PolygonMesh>;
+template <typename PolygonMesh, typename VertexPointMap>
+K_set_tilable_surface(PolygonMesh&, VertexPointMap)
+  -> K_set_tilable_surface<CGAL::Sequential_tag, PolygonMesh, VertexPointMap>;
+/// \endcond
 
 } // namespace Tilable_surfaces
 } // namespace CGAL

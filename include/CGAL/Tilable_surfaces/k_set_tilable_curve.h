@@ -52,7 +52,7 @@ std::vector<Tile_count_trial> k_set_tilable_curve(PolygonMesh& pm,
                           std::to_string(num_faces(pm)) + " faces", Invalid_input::PARAMETER);
   const Vertex_point_map vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                                 get_property_map(CGAL::vertex_point, pm));
-  K_set_tilable_surface<PolygonMesh, Vertex_point_map, ConcurrencyTag> surface(pm, vpm);
+  K_set_tilable_surface<ConcurrencyTag, PolygonMesh, Vertex_point_map> surface(pm, vpm);
 
   std::vector<Tile_count_trial> trials;
   for(std::size_t k : tile_counts)

@@ -200,7 +200,7 @@ K_set_tilable_result make_k_set_tilable(PolygonMesh& pm, const CGAL_NP_CLASS& np
   total.start();
   const Vertex_point_map surface_vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                                         get_property_map(CGAL::vertex_point, pm));
-  K_set_tilable_surface<PolygonMesh, Vertex_point_map, ConcurrencyTag> surface(pm, surface_vpm);
+  K_set_tilable_surface<ConcurrencyTag, PolygonMesh, Vertex_point_map> surface(pm, surface_vpm);
   const double validation_time = total.time();
   visitor.phase("validation", validation_time);
 

@@ -413,7 +413,7 @@ public:
   std::size_t merge_clusters(std::size_t a, std::size_t b)
   {
     require_clustering();
-    edge_sharing_graph();
+    edge_sharing_graph(); // built if it was not: it is amended below
     with_concurrency([&] {
       const Quad_orientation correspondence =
         internal::merge_clusters(m_clustering_model, m_input_quads, a, b, m_policy);

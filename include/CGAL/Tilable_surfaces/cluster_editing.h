@@ -49,7 +49,7 @@ inline Quad_orientation merge_clusters(Face_clustering& fc, const std::vector<Qu
     throw Invalid_input("cannot merge cluster " + std::to_string(a) + " with itself",
                         Invalid_input::PARAMETER);
   const std::size_t kept = (std::min)(a, b), removed = (std::max)(a, b);
-  const std::vector<std::vector<std::size_t> > members = fc.members();
+  const std::vector<std::vector<std::size_t> > members = cluster_members(fc.label, fc.number_of_clusters);
   auto s_quad = [&](std::size_t c) {
     std::vector<Quad_orientation> o;
     for(std::size_t f : members[c]) o.push_back(fc.orientation[f]);
@@ -72,7 +72,7 @@ inline void split_cluster(Face_clustering& fc, const std::vector<Quad>& quads, s
                           Orientation_policy policy, CGAL::Random& random)
 {
   fc.check_cluster(c);
-  const std::vector<std::size_t> members = fc.members()[c];
+  const std::vector<std::size_t> members = cluster_members(fc.label, fc.number_of_clusters)[c];
   if(members.size() < 2)
     throw Invalid_input("cluster " + std::to_string(c) + " has a single face, it cannot be split",
                         Invalid_input::PARAMETER);
@@ -100,9 +100,8 @@ template <typename PolygonMesh, typename FaceIndexMap>
 void retag_orientations(Face_clustering& fc, const PolygonMesh& pm, FaceIndexMap fim,
                         const std::vector<Quad>& quads, Orientation_policy policy, double tolerance)
 {
-  const Cluster_shapes shapes = cluster_shapes(quads, fc.label, fc.number_of_clusters, policy);
-  fc.orientation = flexible_orientations(pm, fim, quads, fc.label, shapes.s_quads, shapes.orientation, policy,
-                                         tolerance);
+  fc.orientation =
+    flexible_cluster_shapes(pm, fim, quads, fc.label, fc.number_of_clusters, policy, tolerance).orientation;
 }
 
 // The clustering in the maps of `np`, read and checked once, with the quads

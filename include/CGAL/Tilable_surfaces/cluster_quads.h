@@ -125,15 +125,25 @@ std::vector<Quad> face_quads(const PolygonMesh& pm, FaceIndexMap fim, const NP& 
 
 // The S-quads of labelling `label` (Procrustes means of the quads of `pm`),
 // each face tagged with an admissible orientation chosen for flexibility
-// (flexible_orientations(), near-ties within `tau`), and the resulting DOF.
+// (flexible_orientations(), near-ties within `tau`).
+template <typename PolygonMesh, typename FaceIndexMap>
+Cluster_shapes flexible_cluster_shapes(const PolygonMesh& pm, FaceIndexMap fim, const std::vector<Quad>& quads,
+                                       const std::vector<std::size_t>& label, std::size_t k,
+                                       Orientation_policy policy, double tau)
+{
+  Cluster_shapes shapes = cluster_shapes(quads, label, k, policy);
+  shapes.orientation =
+    flexible_orientations(pm, fim, quads, label, shapes.s_quads, shapes.orientation, policy, tau);
+  return shapes;
+}
+
+// The same, with the resulting DOF.
 template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
 Cluster_shapes finished_clustering(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
                                    const std::vector<Quad>& quads, const std::vector<std::size_t>& label,
                                    std::size_t k, Orientation_policy policy, double tau)
 {
-  Cluster_shapes shapes = cluster_shapes(quads, label, k, policy);
-  shapes.orientation =
-    flexible_orientations(pm, fim, quads, label, shapes.s_quads, shapes.orientation, policy, tau);
+  Cluster_shapes shapes = flexible_cluster_shapes(pm, fim, quads, label, k, policy, tau);
   shapes.degree_of_flexibility =
     edge_sharing_graph(pm, fim, vpm, label, shapes.orientation, k).degree_of_flexibility();
   return shapes;

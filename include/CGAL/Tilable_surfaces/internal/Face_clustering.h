@@ -25,20 +25,21 @@ namespace CGAL {
 namespace Tilable_surfaces {
 namespace internal {
 
+// Per cluster, its faces (increasing indices).
+inline std::vector<std::vector<std::size_t> >
+cluster_members(const std::vector<std::size_t>& label, std::size_t k)
+{
+  std::vector<std::vector<std::size_t> > members(k);
+  for(std::size_t f = 0; f < label.size(); ++f)
+    members[label[f]].push_back(f);
+  return members;
+}
+
 struct Face_clustering
 {
   std::vector<std::size_t> label;
   std::vector<Quad_orientation> orientation;
   std::size_t number_of_clusters = 0;
-
-  // The faces of every cluster, in face-index order.
-  std::vector<std::vector<std::size_t> > members() const
-  {
-    std::vector<std::vector<std::size_t> > m(number_of_clusters);
-    for(std::size_t f = 0; f < label.size(); ++f)
-      m[label[f]].push_back(f);
-    return m;
-  }
 
   std::vector<std::size_t> cluster_sizes() const
   {

@@ -24,16 +24,6 @@ namespace CGAL {
 namespace Tilable_surfaces {
 namespace internal {
 
-// Per cluster, its faces (increasing indices).
-inline std::vector<std::vector<std::size_t> >
-cluster_members(const std::vector<std::size_t>& label, std::size_t k)
-{
-  std::vector<std::vector<std::size_t> > members(k);
-  for(std::size_t f = 0; f < label.size(); ++f)
-    members[label[f]].push_back(f);
-  return members;
-}
-
 struct Cluster_shapes
 {
   std::vector<Quad> s_quads;                   // per cluster

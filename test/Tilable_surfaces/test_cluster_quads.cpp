@@ -3,6 +3,7 @@
 #include <CGAL/Tilable_surfaces/cluster_editing.h>
 #include <CGAL/Tilable_surfaces/cluster_quads.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/fast_match.h>
+#include <CGAL/Tilable_surfaces/internal/canonical_face_order.h>
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -222,6 +223,23 @@ TEST(FastMatch, SameAsBestMatch)
           EXPECT_TRUE(a.fit.rotation.isApprox(b.fit.rotation, 1e-6));
       }
     }
+}
+
+// The canonical face order by hand on a 3 x 2 grid of 2 x 1 rectangles whose
+// top right corner is pulled to (7, 3). Face centroids: (1, .5), (3, .5),
+// (5, .5), (1, 1.5), (3, 1.5) and (5.25, 1.75) for face 5; their mean is
+// (3.042, 1.042), farthest from face 5 (squared distance 5.38 against 4.46
+// for face 0). Each face's edges run bottom, right, top, left (grid_mesh.h),
+// so the breadth-first search from 5 reaches 2 (below), 4 (left), then from
+// 2 face 1, from 4 face 3, from 1 face 0.
+TEST(CanonicalFaceOrder, BreadthFirstFromTheFaceFarthestFromTheCentroid)
+{
+  Mesh mesh = grid<Mesh>(3, 2);
+  mesh.point(Mesh::Vertex_index(11)) = Point(7, 3, 0);
+  const auto fim = CGAL::get_initialized_face_index_map(mesh);
+  const std::vector<TS::Quad> quads = TS::internal::face_quads(mesh, fim, CGAL::parameters::default_values());
+  const std::vector<std::size_t> rank = TS::internal::canonical_face_ranks(mesh, fim, quads);
+  EXPECT_EQ(rank, (std::vector<std::size_t>{5, 3, 1, 4, 2, 0}));
 }
 
 TEST(ClusterQuads, FlatGridOfEqualRectanglesIsOneCluster)

@@ -133,28 +133,56 @@ public:
                      VertexPointMap vpm, const internal::Face_clustering& clustering)
     : m_edge_index_map(CGAL::get_initialized_edge_index_map(pm))
   {
-    std::vector<std::size_t> edge_nodes(num_edges(pm), no_node());
     reset(clustering.number_of_clusters);
+    // The S-quad edges of the two sides of every mesh edge. Each mesh edge's
+    // length goes to the lower of the two, and every S-quad edge gets its
+    // lengths before any link, so that the spread the links add depends on
+    // the clustering only, not on which face comes first. The faces, and so
+    // the edges, are taken in index order, since the sums are rounded in the
+    // order they are made.
+    std::vector<face_descriptor> face_of(num_faces(pm));
     for(face_descriptor f : faces(pm))
+      face_of[std::size_t(get(fim, f))] = f;
+    std::vector<std::array<std::size_t, 2> > sides(num_edges(pm), {{no_node(), no_node()}});
+    std::vector<double> lengths(num_edges(pm), 0.0);
+    std::vector<std::size_t> edge_order;
+    edge_order.reserve(num_edges(pm));
+    for(std::size_t fi = 0; fi < face_of.size(); ++fi)
     {
-      const std::size_t fi = get(fim, f);
+      const face_descriptor f = face_of[fi];
       const std::size_t c = clustering.label[fi];
       const Quad_orientation orientation = clustering.orientation[fi];
       const auto face_edges = face_edge_halfedges(f, pm);
       for(int j = 0; j < 4; ++j)
       {
         const halfedge_descriptor h = face_edges[std::size_t(j)];
-        const std::size_t node = 4 * c + orientation.template_edge(j);
-        std::size_t& edge_node = edge_nodes[get(m_edge_index_map, edge(h, pm))];
-        if(edge_node == no_node())
+        const std::size_t e = get(m_edge_index_map, edge(h, pm));
+        if(sides[e][0] == no_node())
         {
-          edge_node = node;
-          m_lengths[find(node)].add(internal::distance(get(vpm, source(h, pm)), get(vpm, target(h, pm))));
+          edge_order.push_back(e);
+          sides[e][0] = 4 * c + orientation.template_edge(j);
+          lengths[e] = internal::distance(get(vpm, source(h, pm)), get(vpm, target(h, pm)));
         }
         else
-          link(edge_node, node);
+          sides[e][1] = 4 * c + orientation.template_edge(j);
       }
     }
+    std::vector<std::size_t> edge_nodes(num_edges(pm), no_node());
+    std::vector<std::array<std::size_t, 2> > links;
+    for(std::size_t e : edge_order)
+    {
+      std::array<std::size_t, 2>& side = sides[e];
+      if(side[1] != no_node())
+      {
+        if(side[1] < side[0])
+          std::swap(side[0], side[1]);
+        links.push_back(side);
+      }
+      edge_nodes[e] = side[0];
+      m_lengths[side[0]].add(lengths[e]);
+    }
+    for(const auto& l : links)
+      link(l[0], l[1]);
     m_edge_node = std::make_shared<const std::vector<std::size_t> >(std::move(edge_nodes));
   }
   /// \endcond

@@ -19,6 +19,7 @@
 #include <CGAL/Tilable_surfaces/validation.h>
 #include <CGAL/Tilable_surfaces/visitor.h>
 #include <CGAL/Tilable_surfaces/internal/Face_clustering.h>
+#include <CGAL/Tilable_surfaces/internal/canonical_face_order.h>
 #include <CGAL/Tilable_surfaces/internal/parallel_for.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -92,7 +93,9 @@ template <typename ConcurrencyTag, typename PolygonMesh,
           typename VertexPointMap = typename CGAL::GetVertexPointMap<PolygonMesh>::type>
 class K_set_tilable_surface
 {
-  typedef typename CGAL::GetInitializedFaceIndexMap<PolygonMesh>::const_type Face_index_map;
+  typedef typename CGAL::GetInitializedFaceIndexMap<PolygonMesh>::const_type Original_face_index_map;
+  // The steps index the faces in the canonical order (cluster_quads(), "Canonical face order").
+  typedef internal::Canonical_face_index_map<Original_face_index_map> Face_index_map;
   typedef typename CGAL::GetInitializedVertexIndexMap<PolygonMesh>::const_type Vertex_index_map;
   typedef typename boost::property_traits<VertexPointMap>::value_type Point;
 
@@ -116,19 +119,21 @@ public:
   K_set_tilable_surface(PolygonMesh& pm, VertexPointMap vpm)
     : m_mesh(pm)
     , m_vpm(vpm)
-    , m_fim(CGAL::get_initialized_face_index_map(pm))
     , m_vim(CGAL::get_initialized_vertex_index_map(pm))
     , m_cluster(num_faces(pm), 0)
     , m_orientation(num_faces(pm), 0)
   {
     m_clustering_model.label.assign(num_faces(pm), 0);
     m_clustering_model.orientation.assign(num_faces(pm), Quad_orientation());
-    const auto np = parameters::vertex_point_map(m_vpm).face_index_map(m_fim);
+    const auto original_index = CGAL::get_initialized_face_index_map(pm);
+    const auto np = parameters::vertex_point_map(m_vpm).face_index_map(original_index);
     validate_quad_mesh(pm, np);
     m_input_points.resize(num_vertices(pm));
     for(auto v : vertices(pm))
       m_input_points[get(m_vim, v)] = get(m_vpm, v);
-    m_input_quads = internal::face_quads(pm, m_fim, np);
+    m_faces = internal::Canonical_faces<Original_face_index_map>(pm, original_index,
+                                                                 internal::face_quads(pm, original_index, np));
+    m_fim = m_faces.index_map();
     m_mean_edge_length = mean_edge_length(pm, np);
   }
 
@@ -204,8 +209,11 @@ public:
                       Orientation_policy policy = PROPER_RIGID_MOTIONS)
   {
     internal::Face_clustering clustering =
-      internal::read_face_clustering(m_mesh, m_fim, face_cluster_map, face_orientation_map,
-                                     internal::unknown_number_of_clusters, internal::CONTIGUOUS_IDS);
+      internal::in_canonical_order(internal::read_face_clustering(m_mesh, m_faces.original_index,
+                                                                  face_cluster_map, face_orientation_map,
+                                                                  internal::unknown_number_of_clusters,
+                                                                  internal::CONTIGUOUS_IDS),
+                                   m_faces.rank);
     m_clustering = Clustering_result();
     m_clustering.weights_are_exact = false;
     m_policy = policy;
@@ -256,10 +264,10 @@ public:
   {
     if(i >= m_clustering.candidates.size())
       throw Invalid_input("no clustering candidate " + std::to_string(i), Invalid_input::PARAMETER);
-    const std::vector<std::size_t>& label = m_clustering.candidates[i].face_cluster;
+    const std::vector<std::size_t> label = candidate_labels(i);
     const std::size_t k = m_clustering.cluster_sizes.size();
     const internal::Cluster_shapes shapes = with_concurrency([&] {
-      return internal::finished_clustering(m_mesh, m_fim, input_point_map(), m_input_quads, label, k,
+      return internal::finished_clustering(m_mesh, m_fim, input_point_map(), m_faces.quads, label, k,
                                            m_policy, m_similarity_threshold * m_mean_edge_length);
     });
     set_clustering_model(internal::Face_clustering{label, shapes.orientation, k});
@@ -416,7 +424,7 @@ public:
     edge_sharing_graph(); // built if it was not: it is amended below
     with_concurrency([&] {
       const Quad_orientation correspondence =
-        internal::merge_clusters(m_clustering_model, m_input_quads, a, b, m_policy);
+        internal::merge_clusters(m_clustering_model, m_faces.quads, a, b, m_policy);
       m_graph->merge_clusters((std::min)(a, b), (std::max)(a, b), correspondence);
       m_graph->compact_cluster_ids();
     });
@@ -433,7 +441,7 @@ public:
     require_clustering();
     with_concurrency([&] {
       CGAL::Random random(random_seed);
-      internal::split_cluster(m_clustering_model, m_input_quads, c, m_policy, random);
+      internal::split_cluster(m_clustering_model, m_faces.quads, c, m_policy, random);
     });
     m_graph.reset(); // a union-find cannot undo a union
     publish_clustering_model();
@@ -448,7 +456,7 @@ public:
   {
     require_clustering();
     with_concurrency([&] {
-      internal::retag_orientations(m_clustering_model, m_mesh, m_fim, m_input_quads, m_policy,
+      internal::retag_orientations(m_clustering_model, m_mesh, m_fim, m_faces.quads, m_policy,
                                    m_similarity_threshold * m_mean_edge_length);
     });
     m_graph.reset();
@@ -559,10 +567,10 @@ private:
   {
     const internal::Face_clustering& fc = m_clustering_model;
     const internal::Cluster_shapes shapes =
-      internal::cluster_shapes(m_input_quads, fc.label, fc.number_of_clusters, m_policy);
+      internal::cluster_shapes(m_faces.quads, fc.label, fc.number_of_clusters, m_policy);
     internal::describe_clustering(fc.label, fc.number_of_clusters, shapes, degree_of_flexibility(),
                                   m_clustering.weights_are_exact, [&](std::size_t p, std::size_t q) {
-                                    return internal::fast_best_match(m_input_quads[p], m_input_quads[q],
+                                    return internal::fast_best_match(m_faces.quads[p], m_faces.quads[q],
                                                                      m_policy).dissimilarity;
                                   }, m_clustering);
     m_summary_is_stale = false;
@@ -695,7 +703,7 @@ private:
     return ranked;
   }
 
-  typedef internal::Quad_clusterer<PolygonMesh, Face_index_map, Input_point_map> Clusterer;
+  typedef internal::Quad_clusterer<PolygonMesh, Original_face_index_map, Input_point_map> Clusterer;
 
   // What cluster() and initialize_clusters() start with: the parameters
   // checked and kept, the clusterer made, the description emptied.
@@ -709,8 +717,8 @@ private:
     m_policy = internal::orientation_policy(np);
     m_similarity_threshold = parameters::choose_parameter(
       parameters::get_parameter(np, internal_np::similarity_threshold), defaults::similarity_threshold);
-    m_clusterer.reset(new Clusterer(m_mesh, m_fim, input_point_map(), m_input_quads, m_mean_edge_length, k,
-                                    internal::clustering_settings(np)));
+    m_clusterer.reset(
+      new Clusterer(m_mesh, m_faces, input_point_map(), m_mean_edge_length, k, internal::clustering_settings(np)));
     m_clustering = Clustering_result();
     m_summary_is_stale = false;
   }
@@ -720,11 +728,16 @@ private:
   void adopt_selected_candidate(const internal::Cluster_shapes& shapes)
   {
     m_clusterer.reset();
-    set_clustering_model(internal::Face_clustering{
-      m_clustering.candidates[m_clustering.chosen_candidate].face_cluster, shapes.orientation,
-      m_clustering.cluster_sizes.size()});
+    set_clustering_model(internal::Face_clustering{candidate_labels(m_clustering.chosen_candidate),
+                                                   shapes.orientation, m_clustering.cluster_sizes.size()});
     m_summary_is_stale = false;
     m_is_clustered = true;
+  }
+
+  // The clusters of candidate `i` (by face index), by canonical index.
+  std::vector<std::size_t> candidate_labels(std::size_t i) const
+  {
+    return internal::by_canonical_index(m_clustering.candidates[i].face_cluster, m_faces.rank);
   }
 
   Clusterer& clusterer()
@@ -787,10 +800,10 @@ private:
 
   PolygonMesh& m_mesh;
   VertexPointMap m_vpm;
-  Face_index_map m_fim;
+  internal::Canonical_faces<Original_face_index_map> m_faces;  // the input quads, in canonical order
+  Face_index_map m_fim;                                        // m_faces.index_map()
   Vertex_index_map m_vim;
   std::vector<Point> m_input_points;  // positions of the input, by m_vim
-  std::vector<Quad> m_input_quads;    // the quads of the input, by m_fim
   double m_mean_edge_length = 0;      // of the input
   // The clustering parameters of the last cluster() (or set_clustering()).
   bool m_is_clustered = false;

@@ -17,6 +17,7 @@
 /// The number of clusters K is the largest id in `face_cluster_map` plus one.
 
 #include <CGAL/Tilable_surfaces/cluster_quads.h>
+#include <CGAL/Tilable_surfaces/internal/canonical_face_order.h>
 
 #include <string>
 #include <type_traits>
@@ -105,29 +106,32 @@ void retag_orientations(Face_clustering& fc, const PolygonMesh& pm, FaceIndexMap
 }
 
 // The clustering in the maps of `np`, read and checked once, with the quads
-// of `pm`: what the free edit functions work on.
+// of `pm`, both by canonical index (as K_set_tilable_surface keeps them):
+// what the free edit functions work on.
 template <typename PolygonMesh, typename NP>
 struct Editable_clustering
 {
-  typedef typename CGAL::GetInitializedFaceIndexMap<PolygonMesh, NP>::const_type Face_index_map;
+  typedef typename CGAL::GetInitializedFaceIndexMap<PolygonMesh, NP>::const_type Original_face_index_map;
   typedef typename CGAL::GetVertexPointMap<PolygonMesh, NP>::const_type Vertex_point_map;
 
-  Face_index_map fim;
+  Canonical_faces<Original_face_index_map> faces;
+  Canonical_face_index_map<Original_face_index_map> fim;
   Vertex_point_map vpm;
-  std::vector<Quad> quads;
   Face_clustering fc;
 
-  Editable_clustering(const PolygonMesh& pm, const NP& np)
-    : fim(CGAL::get_initialized_face_index_map(pm, np))
-    , vpm(internal::const_vertex_point_map(pm, np))
+  Editable_clustering(const PolygonMesh& pm, const NP& np) : vpm(internal::const_vertex_point_map(pm, np))
   {
     namespace TS_np = CGAL::Tilable_surfaces::internal_np;
     require_face_maps<NP>();
     validate_quad_mesh(pm, np);
-    fc = read_face_clustering(pm, fim, parameters::get_parameter(np, TS_np::face_cluster),
-                              parameters::get_parameter(np, TS_np::face_orientation),
-                              unknown_number_of_clusters, CONTIGUOUS_IDS);
-    quads = face_quads(pm, fim, np);
+    const Original_face_index_map original_index = CGAL::get_initialized_face_index_map(pm, np);
+    const Face_clustering read =
+      read_face_clustering(pm, original_index, parameters::get_parameter(np, TS_np::face_cluster),
+                           parameters::get_parameter(np, TS_np::face_orientation),
+                           unknown_number_of_clusters, CONTIGUOUS_IDS);
+    faces = Canonical_faces<Original_face_index_map>(pm, original_index, face_quads(pm, original_index, np));
+    fim = faces.index_map();
+    fc = in_canonical_order(read, faces.rank);
   }
 
   void write(const PolygonMesh& pm, const NP& np) const
@@ -167,7 +171,7 @@ std::size_t merge_clusters(const PolygonMesh& pm, std::size_t a, std::size_t b,
   internal::Editable_clustering<PolygonMesh, CGAL_NP_CLASS> e(pm, np);
   Edge_sharing_graph<PolygonMesh> graph(internal::Validated_mesh(true), pm, e.fim, e.vpm, e.fc);
   const Quad_orientation correspondence =
-    internal::merge_clusters(e.fc, e.quads, a, b, internal::orientation_policy(np));
+    internal::merge_clusters(e.fc, e.faces.quads, a, b, internal::orientation_policy(np));
   const std::size_t dof = graph.merge_clusters((std::min)(a, b), (std::max)(a, b), correspondence);
   e.write(pm, np);
   return dof;
@@ -176,9 +180,10 @@ std::size_t merge_clusters(const PolygonMesh& pm, std::size_t a, std::size_t b,
 /// \ingroup PkgTilableSurfacesRef
 /// Splits cluster `c` in two: 2-means on the quad descriptors, then exact
 /// refinement (each quad goes to the nearer of the two S-quads, twice); quads
-/// with equal descriptors are cut in two halves in face-index order.
+/// with equal descriptors are cut in two halves in the canonical face order
+/// (`cluster_quads()`).
 ///
-/// The part with the first face of `c` keeps the id `c`, the other part gets
+/// The part with the first face of `c` (in that order) keeps the id `c`, the other part gets
 /// the id K. The faces of both parts are re-tagged with the orientation that
 /// best matches their new S-quad; the edge-sharing graph is rebuilt (a union-find
 /// cannot undo a union) and its degree of flexibility returned.
@@ -192,7 +197,7 @@ std::size_t split_cluster(const PolygonMesh& pm, std::size_t c, const CGAL_NP_CL
   internal::Editable_clustering<PolygonMesh, CGAL_NP_CLASS> e(pm, np);
   CGAL::Random random(parameters::choose_parameter(
     parameters::get_parameter(np, CGAL::internal_np::random_seed), defaults::random_seed));
-  internal::split_cluster(e.fc, e.quads, c, internal::orientation_policy(np), random);
+  internal::split_cluster(e.fc, e.faces.quads, c, internal::orientation_policy(np), random);
   e.write(pm, np);
   return e.degree_of_flexibility(pm);
 }
@@ -213,7 +218,7 @@ std::size_t retag_orientations(const PolygonMesh& pm, const CGAL_NP_CLASS& np)
   const double tau = parameters::choose_parameter(
     parameters::get_parameter(np, CGAL::Tilable_surfaces::internal_np::similarity_threshold),
     defaults::similarity_threshold);
-  internal::retag_orientations(e.fc, pm, e.fim, e.quads, internal::orientation_policy(np),
+  internal::retag_orientations(e.fc, pm, e.fim, e.faces.quads, internal::orientation_policy(np),
                                tau * mean_edge_length(pm, np));
   e.write(pm, np);
   return e.degree_of_flexibility(pm);

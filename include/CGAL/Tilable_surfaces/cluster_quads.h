@@ -15,6 +15,7 @@
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 #include <CGAL/Tilable_surfaces/validation.h>
 #include <CGAL/Tilable_surfaces/visitor.h>
+#include <CGAL/Tilable_surfaces/internal/canonical_face_order.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/beam_search.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/cluster_analysis.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/descriptor_index.h>
@@ -67,7 +68,8 @@ struct Clustering_candidate
   /// `K_set_tilable_surface::optimize_closest()` ranked it; else 0.
   double predicted_displacement = 0;
   /// The cluster of every face (by face index), 0..K-1 numbered by first
-  /// face; `K_set_tilable_surface` optimizes the most promising candidates.
+  /// face in the canonical face order (see `cluster_quads()`);
+  /// `K_set_tilable_surface` optimizes the most promising candidates.
   std::vector<std::size_t> face_cluster;
 };
 
@@ -224,15 +226,20 @@ Clustering_settings clustering_settings(const NP& np)
 // The stages of cluster_quads() on a checked mesh, in their order (the
 // random draws of the splits, the k-means and the strips come in that order):
 // threshold clustering, beam of merges, the other candidates, the choice, the
-// S-quads and orientations of the chosen one.
-template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
+// S-quads and orientations of the chosen one. The faces are visited in the
+// canonical order (canonical_face_order.h), and indexed by it, except in the
+// candidate pool, which is by original face index; the returned orientations
+// are by canonical index.
+template <typename PolygonMesh, typename OriginalFaceIndexMap, typename VertexPointMap>
 class Quad_clusterer
 {
+  typedef Canonical_face_index_map<OriginalFaceIndexMap> FaceIndexMap;
+
 public:
-  Quad_clusterer(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, std::vector<Quad> quads,
+  Quad_clusterer(const PolygonMesh& pm, Canonical_faces<OriginalFaceIndexMap> faces, VertexPointMap vpm,
                  double mean_edge_length, std::size_t k, const Clustering_settings& settings)
-    : m_pm(pm), m_fim(fim), m_vpm(vpm), m_quads(std::move(quads)), m_n(m_quads.size()), m_k(k)
-    , m_length(mean_edge_length), m_settings(settings), m_random(settings.seed)
+    : m_pm(pm), m_faces(std::move(faces)), m_fim(m_faces.index_map()), m_vpm(vpm), m_quads(m_faces.quads)
+    , m_n(m_quads.size()), m_k(k), m_length(mean_edge_length), m_settings(settings), m_random(settings.seed)
   {
     m_descriptors.resize(m_n);
     for(std::size_t f = 0; f < m_n; ++f) m_descriptors[f] = shape_descriptor(m_quads[f]);
@@ -440,7 +447,9 @@ private:
   {
     Clustering_candidate cand;
     cand.origin = origin;
-    cand.face_cluster = label;
+    std::vector<std::size_t> numbered = label;
+    relabel_by_first_face(numbered);
+    cand.face_cluster = by_original_index(numbered, m_faces.rank);
     cand.weight = weight;
     cand.degree_of_flexibility = graph.degree_of_flexibility();
     cand.length_deviation = graph.length_deviation();
@@ -470,7 +479,8 @@ private:
   // S-quads, orientations, weights and DOF of the chosen configuration.
   Cluster_shapes finish(Clustering_result& result) const
   {
-    const std::vector<std::size_t>& label = result.candidates[result.chosen_candidate].face_cluster;
+    const std::vector<std::size_t> label =
+      by_canonical_index(result.candidates[result.chosen_candidate].face_cluster, m_faces.rank);
     Cluster_shapes shapes = finished_clustering(m_pm, m_fim, m_vpm, m_quads, label, m_k, m_settings.policy,
                                                 m_settings.relative_threshold * m_length);
     describe_clustering(label, m_k, shapes, shapes.degree_of_flexibility, m_exact,
@@ -479,9 +489,10 @@ private:
   }
 
   const PolygonMesh& m_pm;
+  const Canonical_faces<OriginalFaceIndexMap> m_faces;
   FaceIndexMap m_fim;
   VertexPointMap m_vpm;
-  const std::vector<Quad> m_quads;
+  const std::vector<Quad>& m_quads;  // m_faces.quads
   std::vector<Quad_descriptor> m_descriptors;
   const std::size_t m_n, m_k;
   const double m_length;
@@ -513,7 +524,7 @@ std::size_t tile_count(const NamedParameters& np, std::size_t n)
 // are `quads` (K_set_tilable_surface keeps them).
 template <class PolygonMesh, typename NamedParameters>
 Clustering_result cluster_quads(Validated_mesh, const PolygonMesh& pm, const NamedParameters& np,
-                                std::vector<Quad> quads)
+                                const std::vector<Quad>& quads)
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
@@ -521,16 +532,18 @@ Clustering_result cluster_quads(Validated_mesh, const PolygonMesh& pm, const Nam
   const std::size_t k = tile_count(np, num_faces(pm));
   const Clustering_settings settings = clustering_settings(np);
 
-  const auto fim = CGAL::get_initialized_face_index_map(pm, np);
+  const auto original_index = CGAL::get_initialized_face_index_map(pm, np);
   const auto vpm = internal::const_vertex_point_map(pm, np);
-  Quad_clusterer<PolygonMesh, decltype(fim), decltype(vpm)> clusterer(pm, fim, vpm, std::move(quads),
-                                                                      mean_edge_length(pm, np), k, settings);
+  const Canonical_faces<decltype(original_index)> canonical(pm, original_index, quads);
+  Quad_clusterer<PolygonMesh, decltype(original_index), decltype(vpm)> clusterer(
+    pm, canonical, vpm, mean_edge_length(pm, np), k, settings);
   Clustering_result result;
   auto&& visitor = visitor_of(np);
   const Cluster_shapes shapes = clusterer.run(result, visitor);
-  const Face_clustering chosen{result.candidates[result.chosen_candidate].face_cluster, shapes.orientation,
-                               k};
-  write_face_clustering(pm, fim, chosen, get_parameter(np, TS_np::face_cluster),
+  const Face_clustering chosen{
+    by_canonical_index(result.candidates[result.chosen_candidate].face_cluster, canonical.rank),
+    shapes.orientation, k};
+  write_face_clustering(pm, canonical.index_map(), chosen, get_parameter(np, TS_np::face_cluster),
                         get_parameter(np, TS_np::face_orientation));
   return result;
 }
@@ -543,7 +556,8 @@ Clustering_result cluster_quads(Validated_mesh, const PolygonMesh& pm, const Nam
 /// orientation of its S-quad instance (paper §3, §5).
 ///
 /// <b>Method.</b>
-/// -# <i>Threshold clustering</i>: faces are visited in index order; an
+/// -# <i>Threshold clustering</i>: faces are visited in the canonical order
+///    (below); an
 ///    unassigned face leads a new cluster that takes every unassigned face q
 ///    with s(leader, q) < tau, tau = `similarity_threshold` x mean edge length
 ///    (candidates come from a kd-tree on the quad descriptors, an exact
@@ -591,7 +605,18 @@ Clustering_result cluster_quads(Validated_mesh, const PolygonMesh& pm, const Nam
 ///    the best result is kept. Symmetric quads benefit most: a grid of equal
 ///    rectangles at K = 1 gets DOF 4 instead of 2.
 ///
-/// Clusters are numbered 0..K-1 by their first face in face-index order.
+/// <b>Canonical face order.</b> Every step visits the faces, and breaks ties,
+/// in an order taken from the surface rather than from the face indices: a
+/// breadth-first search over edge-adjacent faces, each face's neighbours taken
+/// in the order of its edges from `halfedge(f, pm)`, started at the face
+/// farthest from the centroid of the face centroids (near ties, within a
+/// relative 1e-9, go to the larger face), and restarted the same way on each
+/// further component. Renumbering the faces (each keeping its `halfedge()`)
+/// therefore gives the same clustering renumbered, and a similarity of the
+/// input the same clustering; only an exactly symmetric surface, whose start
+/// faces tie, falls back on the face indices.
+///
+/// Clusters are numbered 0..K-1 by their first face in the canonical order.
 /// The result is deterministic for a given `random_seed`, whatever the number of
 /// threads: parallel loops (TBB, when CGAL is linked with it) only fill
 /// independent slots.

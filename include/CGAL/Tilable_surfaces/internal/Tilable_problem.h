@@ -121,25 +121,35 @@ Tilable_problem make_tilable_problem(const PolygonMesh& pm, const NamedParameter
   problem.degree_of_flexibility = graph.degree_of_flexibility();
   problem.points = read_points(pm, vpm, vim);
 
+  // The faces in index order, the edges in the order the faces reach them:
+  // the groups' first items and the solvers' rounding follow these orders,
+  // which the index map, not the mesh's storage, decides.
+  std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor> face_of(num_faces(pm));
   for(auto f : faces(pm))
+    face_of[std::size_t(get(fim, f))] = f;
+  const auto eim = CGAL::get_initialized_edge_index_map(pm);
+  std::vector<bool> reached(num_edges(pm), false);
+  std::vector<std::vector<std::array<int, 4>>> by_component(problem.degree_of_flexibility);
+  for(std::size_t i = 0; i < face_of.size(); ++i)
   {
     std::array<int, 4> face_order;
     int n = 0;
-    for(auto v : CGAL::vertices_around_face(halfedge(f, pm), pm))
+    for(auto v : CGAL::vertices_around_face(halfedge(face_of[i], pm), pm))
       face_order[n++] = int(get(vim, v));
-    const std::size_t i = get(fim, f);
     const Quad_orientation o = clustering.orientation[i];
     problem.face_corners.push_back({{face_order[o(0)], face_order[o(1)],
                                      face_order[o(2)], face_order[o(3)]}});
     problem.face_cluster.push_back(clustering.label[i]);
-  }
-
-  std::vector<std::vector<std::array<int, 4>>> by_component(problem.degree_of_flexibility);
-  for(auto e : edges(pm))
-  {
-    const std::array<int, 2> ends{{int(get(vim, source(e, pm))), int(get(vim, target(e, pm)))}};
-    problem.edges.push_back(ends);
-    by_component[graph.component(e)].push_back({{ends[0], ends[1], -1, -1}});
+    for(auto h : face_edge_halfedges(face_of[i], pm))
+    {
+      const auto e = edge(h, pm);
+      if(reached[get(eim, e)])
+        continue;
+      reached[get(eim, e)] = true;
+      const std::array<int, 2> ends{{int(get(vim, source(e, pm))), int(get(vim, target(e, pm)))}};
+      problem.edges.push_back(ends);
+      by_component[graph.component(e)].push_back({{ends[0], ends[1], -1, -1}});
+    }
   }
   for(const auto& group : by_component)
   {

@@ -17,6 +17,7 @@
 
 #include <boost/property_map/property_map.hpp>
 
+#include <algorithm>
 #include <cstddef>
 #include <vector>
 
@@ -114,10 +115,15 @@ edge_sharing_graph(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
 template <typename PolygonMesh, typename VertexPointMap>
 double total_length_deviation(const PolygonMesh& pm, VertexPointMap vpm)
 {
-  double count = 0, sum = 0, sum_of_squares = 0;
+  // Sorted, so that the rounded sums do not depend on the order of the edges.
+  std::vector<double> lengths;
+  lengths.reserve(num_edges(pm));
   for(auto e : edges(pm))
+    lengths.push_back(internal::distance(get(vpm, source(e, pm)), get(vpm, target(e, pm))));
+  std::sort(lengths.begin(), lengths.end());
+  double count = 0, sum = 0, sum_of_squares = 0;
+  for(double l : lengths)
   {
-    const double l = internal::distance(get(vpm, source(e, pm)), get(vpm, target(e, pm)));
     count += 1;
     sum += l;
     sum_of_squares += l * l;

@@ -59,7 +59,11 @@ std::vector<Shared_edge> shared_edges(const PolygonMesh& pm, FaceIndexMap fim)
   std::vector<std::size_t> first(num_edges(pm), std::size_t(-1));
   std::vector<int> first_edge(num_edges(pm), 0);
   std::vector<Shared_edge> r;
+  // In index order, which the searches' sweeps follow.
+  std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor> face_of(num_faces(pm));
   for(auto f : faces(pm))
+    face_of[std::size_t(get(fim, f))] = f;
+  for(auto f : face_of)
   {
     const auto face_edges = face_edge_halfedges(f, pm);
     for(int j = 0; j < 4; ++j)

@@ -247,3 +247,27 @@ TEST(ReadQuadMesh, OverflowingCoordinatesAreReadThenRefusedAsSuch)
                                                 "1 0 1e-3\n4 0 1 2 3\n"), near);
   EXPECT_EQ(validation_error(near), "");
 }
+
+// CGAL's OBJ and ASCII PLY readers fail on a coordinate that is not a finite
+// double without saying so; the refusal names the vertex, its line and the
+// token. (The OFF reader is the package's own and says it while reading.)
+TEST(ReadQuadMesh, UnreadableCoordinatesAreNamed)
+{
+  const Temp_dir dir("read_coordinates");
+  const std::string square = "v 1 0 0\nv 1 1 0\nv 0 1 0\nf 1 2 3 4\n";
+  const std::string nan = refusal(write(dir, "nan.obj", "# a comment\nvn 0 0 1\nv 0 0 nan\n" + square));
+  EXPECT_TRUE(contains(nan, "vertex 0 (line 3) has 'nan', not a finite number")) << nan;
+  const std::string huge = refusal(write(dir, "huge.obj", "v 0 0 0\nv 1 0 0\nv 1 1e400 0\nv 0 1 0\nf 1 2 3 4\n"));
+  EXPECT_TRUE(contains(huge, "vertex 2 (line 3) has '1e400', too large for a double")) << huge;
+  const std::string short_vertex = refusal(write(dir, "short.obj", "v 0 0\n" + square));
+  EXPECT_TRUE(contains(short_vertex, "vertex 0 (line 1) has fewer than 3 coordinates")) << short_vertex;
+  const std::string ply =
+    refusal(write(dir, "inf.ply", "ply\nformat ascii 1.0\nelement vertex 4\nproperty double x\n"
+                                  "property double y\nproperty double z\nelement face 1\n"
+                                  "property list uchar int vertex_indices\nend_header\n"
+                                  "0 0 0\n1 0 0\n1 1 inf\n0 1 0\n4 0 1 2 3\n"));
+  EXPECT_TRUE(contains(ply, "vertex 2 (line 12) has 'inf', not a finite number")) << ply;
+  // A failure elsewhere keeps the general message.
+  EXPECT_TRUE(contains(refusal(write(dir, "ref.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3 99\n")),
+                       "(corrupt or truncated file)"));
+}

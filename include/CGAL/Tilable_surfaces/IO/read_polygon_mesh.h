@@ -284,6 +284,76 @@ inline void check_PLY_counts(std::istream& in, std::size_t size)
       }
 }
 
+// Why CGAL's OBJ or ASCII PLY reader may have failed on a coordinate, which
+// it does not say: the first vertex coordinate that is not a finite double
+// ("nan", "inf", or one that overflows such as "1e400"), or a vertex with
+// fewer than three coordinates. Empty if every vertex line reads (or the
+// PLY is binary): the failure was elsewhere.
+inline std::string unreadable_coordinate(std::istream& in, std::size_t size, const std::string& format)
+{
+  in.clear();
+  in.seekg(0, std::ios::beg);
+  std::size_t line_number = 0, vertex = 0;
+  auto check = [&](const std::vector<std::string>& coordinates) -> std::string {
+    const std::string where = "vertex " + std::to_string(vertex) + " (line " + std::to_string(line_number) + ")";
+    if(coordinates.size() < 3)
+      return where + " has fewer than 3 coordinates";
+    for(const std::string& token : coordinates)
+    {
+      char* end = nullptr;
+      const double x = std::strtod(token.c_str(), &end);
+      if(end != token.c_str() + token.size())
+        return where + " has '" + token + "', not a number";
+      if(!std::isfinite(x))
+        return where + " has '" + token + "', " +
+               (std::isnan(x) || token.find_first_of("iInN") != std::string::npos
+                  ? std::string("not a finite number")
+                  : std::string("too large for a double"));
+    }
+    return std::string();
+  };
+  std::string line;
+  if(format == "obj")
+  {
+    while(std::getline(in, line))
+    {
+      ++line_number;
+      std::vector<std::string> tokens = line_tokens(line);
+      if(tokens.empty() || tokens[0] != "v")
+        continue;
+      tokens.erase(tokens.begin());
+      if(tokens.size() > 3)
+        tokens.resize(3);  // an optional weight or colour follows
+      const std::string problem = check(tokens);
+      if(!problem.empty())
+        return problem;
+      ++vertex;
+    }
+    return std::string();
+  }
+  PLY_header header;
+  try { header = read_PLY_header(in, size); } catch(const File_error&) { return std::string(); }
+  if(header.format != "ascii")
+    return std::string();
+  std::streamoff body = in.tellg();
+  in.seekg(0, std::ios::beg);
+  for(std::streamoff read = 0; read < body && std::getline(in, line); read = in.tellg())
+    ++line_number;
+  in.seekg(body, std::ios::beg);
+  for(const PLY_element& e : header.elements)
+    for(std::size_t i = 0; i < e.count && std::getline(in, line); ++i)
+    {
+      ++line_number;
+      if(e.name != "vertex")
+        continue;
+      const std::string problem = check(line_tokens(line));
+      if(!problem.empty())
+        return problem;
+      ++vertex;
+    }
+  return std::string();
+}
+
 inline std::string lower_extension(const std::string& path)
 {
   const std::size_t dot = path.find_last_of('.'), slash = path.find_last_of('/');
@@ -353,7 +423,11 @@ Read_report read_quad_mesh(std::istream& in, const std::string& format, PolygonM
                   : format == "obj" ? CGAL::IO::read_OBJ(in, points, polygons, quiet)
                                     : CGAL::IO::read_PLY(in, points, polygons, quiet);
   if(!read)
-    throw Invalid_input("'" + name + "' is not a readable polygon mesh (corrupt or truncated file)");
+  {
+    const std::string coordinate = internal::unreadable_coordinate(in, size, format);
+    throw Invalid_input("'" + name + "' is not a readable polygon mesh (" +
+                        (coordinate.empty() ? std::string("corrupt or truncated file") : coordinate) + ")");
+  }
   std::vector<bool> used(points.size(), false);
   for(std::size_t f = 0; f < polygons.size(); ++f)
     for(std::size_t v : polygons[f])

@@ -11,6 +11,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <set>
 #include <string>
@@ -381,17 +382,28 @@ TEST(MakeKSetTilable, OneVisitorFollowsEveryStage)
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/global_control.h>
 
+// With the parallel tag (the default tag runs on one thread whatever the
+// limit): the candidates' displacement predictions, made in parallel, and
+// the result are bit-identical on one thread and on two.
 TEST(MakeKSetTilable, SameResultWhateverTheThreadCount)
 {
   std::vector<std::vector<Mesh::Point> > results;
+  std::vector<std::vector<double> > predictions;
   for(int threads : {1, 2})
   {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
     Mesh mesh = read("seashell.off");
-    TS::make_k_set_tilable(mesh, TSP::number_of_tiles(96));
+    const TS::K_set_tilable_result r =
+      TS::make_k_set_tilable<CGAL::Parallel_tag>(mesh, TSP::number_of_tiles(96));
     results.push_back(points(mesh));
+    predictions.emplace_back();
+    for(const TS::Clustering_candidate& c : r.clustering.candidates)
+      predictions.back().push_back(c.predicted_displacement);
   }
   EXPECT_TRUE(results[0] == results[1]) << "bit-identical positions";
+  ASSERT_GT(predictions[0].size(), 2u);
+  EXPECT_GT(*std::min_element(predictions[0].begin(), predictions[0].end()), 0.0) << "every candidate predicted";
+  EXPECT_TRUE(predictions[0] == predictions[1]) << "bit-identical predictions";
 }
 #endif
 

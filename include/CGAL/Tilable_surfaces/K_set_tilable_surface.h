@@ -264,14 +264,9 @@ public:
   {
     if(i >= m_clustering.candidates.size())
       throw Invalid_input("no clustering candidate " + std::to_string(i), Invalid_input::PARAMETER);
-    const std::vector<std::size_t> label = candidate_labels(i);
-    const std::size_t k = m_clustering.cluster_sizes.size();
-    const internal::Cluster_shapes shapes = with_concurrency([&] {
-      return internal::finished_clustering(m_mesh, m_fim, input_point_map(), m_faces.quads, label, k,
-                                           m_policy, m_similarity_threshold * m_mean_edge_length);
-    });
-    set_clustering_model(internal::Face_clustering{label, shapes.orientation, k});
-    return shapes.degree_of_flexibility;
+    std::size_t degree_of_flexibility = 0;
+    set_clustering_model(with_concurrency([&] { return candidate_model(i, degree_of_flexibility); }));
+    return degree_of_flexibility;
   }
 
   /// The displacement the default solver is predicted to need for the
@@ -291,7 +286,8 @@ public:
   /// clusterings, then improves it; the default of `make_k_set_tilable()`.
   ///
   /// -# The candidates of the last `cluster()` are ranked two ways: by their
-  ///    predicted displacement (`predict_displacement()`), and by the spread
+  ///    predicted displacement (`predict_displacement()`; with a parallel
+  ///    `ConcurrencyTag`, one candidate per thread, with the same values), and by the spread
   ///    of the input's edge lengths that their edge-sharing graph ties
   ///    together (`Clustering_candidate::length_deviation`). Shape
   ///    similarity and DOF do not say how far a clustering moves the surface;
@@ -647,22 +643,17 @@ private:
       return false;
     std::sort(pairs.begin(), pairs.end());
     pairs.resize((std::min)(pairs.size(), std::size_t(4)));
-    const State split = state();
-    double best_prediction = std::numeric_limits<double>::infinity();
-    std::pair<std::size_t, std::size_t> best_pair(0, 1);
-    for(const auto& p : pairs)
-    {
-      set_state(split);
-      merge_clusters(p.second.first, p.second.second);
-      const double prediction = predict_displacement(np).max;
-      if(prediction < best_prediction)
-      {
-        best_prediction = prediction;
-        best_pair = p.second;
-      }
-    }
-    set_state(split);
-    merge_clusters(best_pair.first, best_pair.second);
+    // Each pair merged in a copy and predicted, in parallel (predict_candidates()).
+    std::vector<double> prediction(pairs.size());
+    with_concurrency([&] {
+      internal::parallel_for(pairs.size(), [&](std::size_t i) {
+        internal::Face_clustering merged = m_clustering_model;
+        internal::merge_clusters(merged, m_faces.quads, pairs[i].second.first, pairs[i].second.second, m_policy);
+        prediction[i] = predicted_displacement(merged, np);
+      });
+    });
+    const std::size_t best = std::size_t(std::min_element(prediction.begin(), prediction.end()) - prediction.begin());
+    merge_clusters(pairs[best].second.first, pairs[best].second.second);
     retag_orientations();
     return true;
   }
@@ -675,12 +666,11 @@ private:
   template <typename NP>
   std::vector<std::size_t> ranked_candidates(const NP& np, std::size_t optimized)
   {
+    predict_candidates(np);
     std::vector<std::pair<double, std::size_t> > by_prediction, by_spread;
     for(std::size_t i = 0; i < m_clustering.candidates.size(); ++i)
     {
-      use_candidate(i);
-      Clustering_candidate& candidate = m_clustering.candidates[i];
-      candidate.predicted_displacement = predict_displacement(np).max;
+      const Clustering_candidate& candidate = m_clustering.candidates[i];
       by_prediction.push_back({candidate.predicted_displacement, i});
       by_spread.push_back({candidate.length_deviation, i});
     }
@@ -740,6 +730,56 @@ private:
     return internal::by_canonical_index(m_clustering.candidates[i].face_cluster, m_faces.rank);
   }
 
+  // Candidate `i` with S-quads and flexible orientations as use_candidate()
+  // makes it current; reads the input quads only.
+  internal::Face_clustering candidate_model(std::size_t i, std::size_t& degree_of_flexibility) const
+  {
+    const std::vector<std::size_t> label = candidate_labels(i);
+    const std::size_t k = m_clustering.cluster_sizes.size();
+    const internal::Cluster_shapes shapes =
+      internal::finished_clustering(m_mesh, m_fim, input_point_map(), m_faces.quads, label, k, m_policy,
+                                    m_similarity_threshold * m_mean_edge_length);
+    degree_of_flexibility = shapes.degree_of_flexibility;
+    return internal::Face_clustering{label, shapes.orientation, k};
+  }
+
+  // Sets `predicted_displacement` of every candidate of the pool, from the
+  // input positions. The candidates are predicted in parallel, each into its
+  // own slot with its own maps: one prediction is one serial factorization
+  // (sparse_solver.h), so this is where the threads pay, and every value is
+  // the one a single thread computes. The index maps the predictions read
+  // were initialized by the constructor's validation.
+  template <typename NP>
+  void predict_candidates(const NP& np)
+  {
+    restore_input();
+    std::vector<Clustering_candidate>& pool = m_clustering.candidates;
+    with_concurrency([&] {
+      internal::parallel_for(pool.size(), [&](std::size_t i) {
+        std::size_t unused_dof;
+        pool[i].predicted_displacement = predicted_displacement(candidate_model(i, unused_dof), np);
+      });
+    });
+  }
+
+  // The predicted displacement (`Displacement_prediction::max`) of the
+  // clustering `model`, with maps of its own: safe to call from several
+  // threads once the mesh holds the input positions.
+  template <typename NP>
+  double predicted_displacement(const internal::Face_clustering& model, const NP& np) const
+  {
+    std::vector<int> cluster(model.label.size()), orientation(model.label.size());
+    for(std::size_t f = 0; f < cluster.size(); ++f)
+    {
+      cluster[f] = int(model.label[f]);
+      orientation[f] = model.orientation[f].index();
+    }
+    return internal::predict_displacement(internal::Validated_mesh(true), m_mesh,
+                                          with_maps(np, Face_cluster_map(cluster.begin(), m_fim),
+                                                    Face_orientation_map(orientation.begin(), m_fim)))
+      .max;
+  }
+
   Clusterer& clusterer()
   {
     if(!m_clusterer)
@@ -782,11 +822,19 @@ private:
   template <typename NP>
   auto with_own_maps(const NP& np)
   {
+    return with_maps(np, face_cluster_map(), face_orientation_map());
+  }
+
+  // The same with the clustering in `cluster` and `orientation`.
+  template <typename NP>
+  auto with_maps(const NP& np, Face_cluster_map cluster, Face_orientation_map orientation) const
+  {
     return parameters::extend(np)
       .vertex_point_map(m_vpm)
+      .vertex_index_map(m_vim)
       .face_index_map(m_fim)
-      .face_cluster_map(face_cluster_map())
-      .face_orientation_map(face_orientation_map())
+      .face_cluster_map(cluster)
+      .face_orientation_map(orientation)
       .orientation_policy(parameters::choose_parameter(
         parameters::get_parameter(np, internal_np::orientation_policy), m_policy));
   }

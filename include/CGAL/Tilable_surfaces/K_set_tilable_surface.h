@@ -551,11 +551,7 @@ private:
   // stay valid) and marks the description of clustering() stale.
   void publish_clustering_model()
   {
-    for(std::size_t f = 0; f < m_cluster.size(); ++f)
-    {
-      m_cluster[f] = int(m_clustering_model.label[f]);
-      m_orientation[f] = m_clustering_model.orientation[f].index();
-    }
+    m_clustering_model.write_ids(m_cluster, m_orientation);
     m_summary_is_stale = true;
   }
 
@@ -769,11 +765,7 @@ private:
   double predicted_displacement(const internal::Face_clustering& model, const NP& np) const
   {
     std::vector<int> cluster(model.label.size()), orientation(model.label.size());
-    for(std::size_t f = 0; f < cluster.size(); ++f)
-    {
-      cluster[f] = int(model.label[f]);
-      orientation[f] = model.orientation[f].index();
-    }
+    model.write_ids(cluster, orientation);
     return internal::predict_displacement(internal::Validated_mesh(true), m_mesh,
                                           with_maps(np, Face_cluster_map(cluster.begin(), m_fim),
                                                     Face_orientation_map(orientation.begin(), m_fim)))

@@ -49,6 +49,18 @@ struct Face_clustering
     return sizes;
   }
 
+  // The clustering as the int ids and orientation indices (0..7) the
+  // public maps hold, written in place into `cluster` and `orientation`
+  // (one slot per face), so that maps already handed out stay valid.
+  void write_ids(std::vector<int>& cluster, std::vector<int>& orientation_index) const
+  {
+    for(std::size_t f = 0; f < label.size(); ++f)
+    {
+      cluster[f] = int(label[f]);
+      orientation_index[f] = orientation[f].index();
+    }
+  }
+
   void check_cluster(std::size_t c) const
   {
     if(c >= number_of_clusters)

@@ -29,6 +29,7 @@
 #include <algorithm>
 #include <limits>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <type_traits>
@@ -106,6 +107,12 @@ public:
   typedef boost::iterator_property_map<typename std::vector<Point>::const_iterator, Vertex_index_map, Point,
                                        const Point&>
     Input_point_map;
+private:
+  // Points stored by vertex index: the positions of a solve on a copy.
+  typedef boost::iterator_property_map<typename std::vector<Point>::iterator, Vertex_index_map, Point, Point&>
+    Point_storage_map;
+
+public:
   /// Readable and writable map from faces to their cluster id (0..K-1).
   typedef boost::iterator_property_map<std::vector<int>::iterator, Face_index_map, int, int&>
     Face_cluster_map;
@@ -302,7 +309,14 @@ public:
   ///    (`Clustering_candidate::GRID_SEGMENTS`), in the order they were made:
   ///    both rankings underrate them (seashell stand-in, K = 60: the one that
   ///    keeps the spiral ends at 2.2% of the diagonal, the best of the others
-  ///    at 5.7%).
+  ///    at 5.7%). Each solve after the first may take at most 3 times the
+  ///    iterations of the best result so far (at least 30). With a parallel
+  ///    `ConcurrencyTag` and more than one thread, the next candidate is
+  ///    solved beside the current one with the same cap, and kept if the cap
+  ///    has not changed when its turn comes: the same results as one
+  ///    candidate at a time, since the solves are deterministic. The
+  ///    visitor's `iteration()` may then be called by two solves in turn
+  ///    (under a lock), one of which may be discarded.
   /// -# Then `number_of_improvement_rounds` rounds of edits, K fixed: the
   ///    cluster whose instances moved most (mean off-input distance of its
   ///    corners) is split in two, and of the pairs of clusters whose merge
@@ -350,24 +364,24 @@ public:
                                                  default_number_of_iterations(CONSTRAINED_GAUSS_NEWTON));
     visitor.phase("displacement prediction", timer.time());
     State best;
-    for(std::size_t r = 0; r < ranked.size(); ++r)
+    bool stopped = false;
+    Solved_ahead ahead;
+    for(std::size_t r = 0; r < ranked.size() && !stopped; ++r)
     {
       timer.reset();
-      use_candidate(ranked[r]);
       // Later solves get a few times the iterations of the best so far: one
       // that cannot converge in them is unlikely to end closer, and
       // non-converging solves would otherwise cost the whole budget.
-      optimize(np.number_of_iterations(r == 0 ? user_iterations : iteration_cap(best, user_iterations)));
-      if(r == 0 || internal::is_better(m_optimization, best.optimization))
+      const int cap = r == 0 ? user_iterations : iteration_cap(best, user_iterations);
+      State solved = solve_ranked_candidate(ranked, r, cap, np, ahead);
+      stopped = solved.optimization.stopped_by_visitor;
+      if(r == 0 || internal::is_better(solved.optimization, best.optimization))
       {
-        best = state();
+        best = std::move(solved);
         m_clustering.chosen_candidate = ranked[r];
       }
       visitor.phase("candidate optimization", timer.time());
-      if(m_optimization.stopped_by_visitor)
-        break;
     }
-    const bool stopped = m_optimization.stopped_by_visitor;
     set_state(best);
 
     // 2. Improvement rounds, and repair rounds while the best is not tilable:
@@ -581,6 +595,87 @@ private:
     return (std::min)(user_iterations, (std::max)(30, 3 * best.optimization.iterations));
   }
 
+  // A candidate solved before its turn, with the iteration cap it was given.
+  struct Solved_ahead
+  {
+    std::optional<State> state;
+    std::size_t rank = 0;
+    int cap = 0;
+  };
+
+  // The solve of candidate ranked[r] with `cap` iterations, from the input.
+  // With several threads, candidate ranked[r + 1] is solved beside it with
+  // the same cap and kept in `ahead`: it is exactly the next solve if the
+  // cap does not change, that is, unless candidate r becomes the best with a
+  // different iteration count (the cap of the first candidate is the user's,
+  // so its successor is not solved ahead). Solves are deterministic, so the
+  // result is the same with or without the solves ahead.
+  template <typename NP>
+  State solve_ranked_candidate(const std::vector<std::size_t>& ranked, std::size_t r, int cap,
+                               const NP& np, Solved_ahead& ahead)
+  {
+    if(ahead.state && ahead.rank == r && ahead.cap == cap)
+    {
+      State solved = std::move(*ahead.state);
+      ahead.state.reset();
+      return solved;
+    }
+    ahead.state.reset();
+    restore_input();
+    auto&& visitor = internal::visitor_of(np);
+    std::mutex mutex;
+    Locked_visitor<std::remove_reference_t<decltype(visitor)> > locked{&visitor, &mutex};
+    const auto solve_np = internal::with_visitor(np, locked).number_of_iterations(cap);
+    const bool solve_ahead =
+      r > 0 && r + 1 < ranked.size() && with_concurrency([] { return internal::several_threads_available(); });
+    std::vector<State> solved(solve_ahead ? 2 : 1);
+    with_concurrency([&] {
+      internal::parallel_for(solved.size(), [&](std::size_t j) { solved[j] = solved_candidate(ranked[r + j], solve_np); });
+    });
+    if(solve_ahead)
+      ahead = Solved_ahead{std::move(solved[1]), r + 1, cap};
+    return std::move(solved[0]);
+  }
+
+  // Forwards to a visitor under a lock: two solves may call it at once.
+  template <typename Visitor>
+  struct Locked_visitor
+  {
+    Visitor* visitor;
+    std::mutex* mutex;
+
+    bool iteration(int iteration, double congruence_error, double objective)
+    {
+      std::lock_guard<std::mutex> lock(*mutex);
+      return visitor->iteration(iteration, congruence_error, objective);
+    }
+    void phase(const char* name, double seconds)
+    {
+      std::lock_guard<std::mutex> lock(*mutex);
+      visitor->phase(name, seconds);
+    }
+  };
+
+  // Candidate `i` optimized from the input on copies (its clustering, maps
+  // and points): what use_candidate(i) then optimize() give, without
+  // touching the object; safe to call from several threads once the mesh
+  // holds the input positions.
+  template <typename NP>
+  State solved_candidate(std::size_t i, const NP& np) const
+  {
+    State solved;
+    std::size_t unused_dof;
+    solved.clustering = candidate_model(i, unused_dof);
+    std::vector<int> cluster(solved.clustering.label.size()), orientation(solved.clustering.label.size());
+    solved.clustering.write_ids(cluster, orientation);
+    solved.points = m_input_points;
+    const Point_storage_map points(solved.points.begin(), m_vim);
+    solved.optimization = internal::optimize_tilable_surface(
+      internal::Validated_mesh(true), m_mesh,
+      with_maps(np, points, Face_cluster_map(cluster.begin(), m_fim), Face_orientation_map(orientation.begin(), m_fim)));
+    return solved;
+  }
+
   // Rounds of optimize_closest() beyond the user's that repair a result that
   // is not tilable.
   static constexpr int repair_rounds = 4;
@@ -767,7 +862,7 @@ private:
     std::vector<int> cluster(model.label.size()), orientation(model.label.size());
     model.write_ids(cluster, orientation);
     return internal::predict_displacement(internal::Validated_mesh(true), m_mesh,
-                                          with_maps(np, Face_cluster_map(cluster.begin(), m_fim),
+                                          with_maps(np, m_vpm, Face_cluster_map(cluster.begin(), m_fim),
                                                     Face_orientation_map(orientation.begin(), m_fim)))
       .max;
   }
@@ -814,15 +909,16 @@ private:
   template <typename NP>
   auto with_own_maps(const NP& np)
   {
-    return with_maps(np, face_cluster_map(), face_orientation_map());
+    return with_maps(np, m_vpm, face_cluster_map(), face_orientation_map());
   }
 
-  // The same with the clustering in `cluster` and `orientation`.
-  template <typename NP>
-  auto with_maps(const NP& np, Face_cluster_map cluster, Face_orientation_map orientation) const
+  // The same with the points in `vpm` and the clustering in `cluster` and
+  // `orientation`.
+  template <typename NP, typename PointMap>
+  auto with_maps(const NP& np, PointMap vpm, Face_cluster_map cluster, Face_orientation_map orientation) const
   {
     return parameters::extend(np)
-      .vertex_point_map(m_vpm)
+      .vertex_point_map(vpm)
       .vertex_index_map(m_vim)
       .face_index_map(m_fim)
       .face_cluster_map(cluster)

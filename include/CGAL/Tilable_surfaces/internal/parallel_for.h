@@ -18,6 +18,7 @@
 
 #ifdef CGAL_LINKED_WITH_TBB
 #include <tbb/blocked_range.h>
+#include <tbb/global_control.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
 #endif
@@ -38,6 +39,19 @@ void parallel_for(std::size_t n, const Body& body)
 #else
   for(std::size_t i = 0; i < n; ++i)
     body(i);
+#endif
+}
+
+// Whether a parallel_for() called here may run on more than one thread: in
+// this arena, within the process's limit. Only for choosing whether work
+// done ahead may pay; never for what a result is.
+inline bool several_threads_available()
+{
+#ifdef CGAL_LINKED_WITH_TBB
+  return tbb::this_task_arena::max_concurrency() > 1 &&
+         tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism) > 1;
+#else
+  return false;
 #endif
 }
 

@@ -107,12 +107,6 @@ public:
   typedef boost::iterator_property_map<typename std::vector<Point>::const_iterator, Vertex_index_map, Point,
                                        const Point&>
     Input_point_map;
-private:
-  // Points stored by vertex index: the positions of a solve on a copy.
-  typedef boost::iterator_property_map<typename std::vector<Point>::iterator, Vertex_index_map, Point, Point&>
-    Point_storage_map;
-
-public:
   /// Readable and writable map from faces to their cluster id (0..K-1).
   typedef boost::iterator_property_map<std::vector<int>::iterator, Face_index_map, int, int&>
     Face_cluster_map;
@@ -621,7 +615,6 @@ private:
       return solved;
     }
     ahead.state.reset();
-    restore_input();
     auto&& visitor = internal::visitor_of(np);
     std::mutex mutex;
     Locked_visitor<std::remove_reference_t<decltype(visitor)> > locked{&visitor, &mutex};
@@ -658,21 +651,18 @@ private:
 
   // Candidate `i` optimized from the input on copies (its clustering, maps
   // and points): what use_candidate(i) then optimize() give, without
-  // touching the object; safe to call from several threads once the mesh
-  // holds the input positions.
+  // touching the object; safe to call from several threads.
   template <typename NP>
   State solved_candidate(std::size_t i, const NP& np) const
   {
     State solved;
     std::size_t unused_dof;
     solved.clustering = candidate_model(i, unused_dof);
-    std::vector<int> cluster(solved.clustering.label.size()), orientation(solved.clustering.label.size());
-    solved.clustering.write_ids(cluster, orientation);
+    Model_maps maps(solved.clustering);
     solved.points = m_input_points;
     const Point_storage_map points(solved.points.begin(), m_vim);
-    solved.optimization = internal::optimize_tilable_surface(
-      internal::Validated_mesh(true), m_mesh,
-      with_maps(np, points, Face_cluster_map(cluster.begin(), m_fim), Face_orientation_map(orientation.begin(), m_fim)));
+    solved.optimization = internal::optimize_tilable_surface(internal::Validated_mesh(true), m_mesh,
+                                                             with_model_maps(np, points, maps));
     return solved;
   }
 
@@ -859,11 +849,8 @@ private:
   template <typename NP>
   double predicted_displacement(const internal::Face_clustering& model, const NP& np) const
   {
-    std::vector<int> cluster(model.label.size()), orientation(model.label.size());
-    model.write_ids(cluster, orientation);
-    return internal::predict_displacement(internal::Validated_mesh(true), m_mesh,
-                                          with_maps(np, m_vpm, Face_cluster_map(cluster.begin(), m_fim),
-                                                    Face_orientation_map(orientation.begin(), m_fim)))
+    Model_maps maps(model);
+    return internal::predict_displacement(internal::Validated_mesh(true), m_mesh, with_model_maps(np, m_vpm, maps))
       .max;
   }
 
@@ -910,6 +897,30 @@ private:
   auto with_own_maps(const NP& np)
   {
     return with_maps(np, m_vpm, face_cluster_map(), face_orientation_map());
+  }
+
+  // Points stored by vertex index: the positions of a solve on a copy.
+  typedef boost::iterator_property_map<typename std::vector<Point>::iterator, Vertex_index_map, Point, Point&>
+    Point_storage_map;
+
+  // A clustering as the ints the maps read, in storage of its own: for the
+  // steps that work on a copy of the current clustering, several at once.
+  struct Model_maps
+  {
+    std::vector<int> cluster, orientation;
+    explicit Model_maps(const internal::Face_clustering& model)
+      : cluster(model.label.size()), orientation(model.label.size())
+    {
+      model.write_ids(cluster, orientation);
+    }
+  };
+
+  // with_maps() with the clustering in `maps`, which must outlive the result.
+  template <typename NP, typename PointMap>
+  auto with_model_maps(const NP& np, PointMap vpm, Model_maps& maps) const
+  {
+    return with_maps(np, vpm, Face_cluster_map(maps.cluster.begin(), m_fim),
+                     Face_orientation_map(maps.orientation.begin(), m_fim));
   }
 
   // The same with the points in `vpm` and the clustering in `cluster` and

@@ -25,6 +25,7 @@
 
 #include <cmath>
 #include <cstdint>
+#include <limits>
 #include <memory>
 #include <string>
 #include <vector>
@@ -89,7 +90,7 @@ Mesh mesh_of_arrays(const py::object& vertices_object, const py::object& faces_o
   if(vertices.ndim() != 2 || vertices.shape(1) != 3)
     invalid("vertices must be an (n, 3) array of coordinates");
   if(faces.ndim() != 2 || faces.shape(1) != 4)
-    invalid("faces must be an (m, 4) array of vertex indices (quads)");
+    invalid("faces must be an (m, 4) array of vertex indices (quads; -1 as the fourth of a triangle)");
   const char kind = faces.dtype().kind();
   if(kind != 'i' && kind != 'u')
     invalid("faces must be an array of integers, not of dtype kind '" + std::string(1, kind) + "'");
@@ -109,6 +110,8 @@ Mesh mesh_of_arrays(const py::object& vertices_object, const py::object& faces_o
     for(py::ssize_t j = 0; j < 4; ++j)
     {
       const std::int64_t index = fr(i, j);
+      if(j == 3 && index == -1)
+        break;  // a triangle
       if(index < 0 || index >= vr.shape(0))
         throw TS::Invalid_input("face " + std::to_string(i) + " refers to vertex " +
                                   std::to_string(index) + ", not in 0.." +
@@ -151,10 +154,16 @@ py::dict result_dict(const Mesh& mesh, const TS::K_set_tilable_result& r)
     cluster.push_back(cluster_map[f]);
     orientation.push_back(orientation_map[f]);
   }
+  // An S-triangle's fourth corner is NaN.
   std::vector<double> s_quads;
-  for(const TS::Quad& q : m.s_quads)
+  std::vector<std::int64_t> tile_corners;
+  for(const TS::Panel& q : m.s_quads)
+  {
+    tile_corners.push_back(q.size());
     for(int i = 0; i < 4; ++i)
-      for(int c = 0; c < 3; ++c) s_quads.push_back(q[std::size_t(i)][c]);
+      for(int c = 0; c < 3; ++c)
+        s_quads.push_back(i < q.size() ? q[i][c] : std::numeric_limits<double>::quiet_NaN());
+  }
   const py::ssize_t n = py::ssize_t(mesh.number_of_vertices()), f = py::ssize_t(cluster.size()),
                     k = py::ssize_t(m.s_quads.size());
 
@@ -171,6 +180,7 @@ py::dict result_dict(const Mesh& mesh, const TS::K_set_tilable_result& r)
   d["cluster_sizes"] =
     numpy_array(std::vector<std::int64_t>(m.cluster_sizes.begin(), m.cluster_sizes.end()), {k});
   d["s_quads"] = numpy_array(s_quads, {k, 4, 3});
+  d["tile_corners"] = numpy_array(tile_corners, {k});
   d["mean_edge_length"] = m.mean_edge_length;
   d["input_bbox_diagonal"] = m.input_bbox_diagonal;
   d["max_approximation_error"] = m.max_approximation_error;
@@ -274,7 +284,8 @@ PYBIND11_MODULE(tilable_surfaces, module)
     R"doc(Makes the quad mesh (vertices, faces) K-set tilable.
 
 vertices: (n, 3) array of float64 coordinates; faces: (m, 4) array of integer vertex
-indices, each quad counter-clockwise seen from outside, consistently oriented.
+indices, each quad counter-clockwise seen from outside, consistently oriented; a triangle
+has -1 as its fourth index (it gets a tile of its own kind).
 
 Keyword arguments (defaults of the C++ named parameters):
   k                     number of distinct tiles (S-quads), required, 1..m
@@ -293,7 +304,8 @@ Keyword arguments (defaults of the C++ named parameters):
 
 Returns a dict: 'vertices' (n, 3) moved positions, 'cluster' (m,) cluster of each face,
 'orientation' (m,) orientation 0..7 of each face (template corner i is face vertex
-(i + o) % 4 for o < 4, (o - i) % 4 for o >= 4), 's_quads' (K, 4, 3), 'is_tilable',
+(i + o) % n for o < 4, (o - 4 - i) % n for o >= 4, n = 4 or 3 corners), 's_quads' (K, 4, 3;
+an S-triangle's fourth corner is NaN), 'tile_corners' (K,) 4 or 3, 'is_tilable',
 'congruence_error', 'cluster_congruence_errors', 'cluster_sizes', 'degree_of_flexibility',
 'number_of_clusters', 'mean_edge_length', 'planarity_error' (the largest distance between the
 diagonals of a face over the mean edge length), 'input_bbox_diagonal', 'hausdorff_distance' and

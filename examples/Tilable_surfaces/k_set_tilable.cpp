@@ -36,6 +36,7 @@
 #include <tbb/global_control.h>
 #endif
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -126,7 +127,7 @@ Options parse(int argc, char** argv, bool& help)
     "Usage: k_set_tilable INPUT -k K -o OUTPUT.ply [options]\n"
     "       k_set_tilable INPUT --max-deviation D [-k KMAX] -o OUTPUT.ply [options]\n"
     "       k_set_tilable INPUT --sweep KMIN:KMAX[:STEP] --curve CURVE.csv [options]\n"
-    "Makes the quad mesh INPUT (OFF, OBJ or PLY) tilable by K distinct quad shapes.\nOptions");
+    "Makes the quad mesh INPUT (OFF, OBJ or PLY; triangles allowed) tilable by K distinct panel shapes.\nOptions");
   visible.add_options()
     ("help,h", "print this help and exit")
     ("k,k", po::value<int>(&o.k), "number K of distinct tiles (S-quads); with --max-deviation, "
@@ -510,6 +511,11 @@ int run(const Options& o)
                                              : "WARNING: no K up to the largest tried meets the budget; result at K = ")
               << m.number_of_clusters << "\n";
   }
+  const std::size_t triangle_tiles = std::size_t(std::count_if(
+    m.s_quads.begin(), m.s_quads.end(), [](const TS::Panel& s) { return s.is_triangle(); }));
+  if(triangle_tiles > 0)
+    std::cerr << "[k_set_tilable] " << m.number_of_clusters - triangle_tiles << " quad tiles and "
+              << triangle_tiles << " triangle tiles\n";
   if(m.requires_planar_tiles)
     std::cerr << "[k_set_tilable] planar panels: the diagonals of every face are within "
               << std::scientific << std::setprecision(2) << m.planarity_error

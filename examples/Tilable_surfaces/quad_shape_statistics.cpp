@@ -69,12 +69,12 @@ int main(int argc, char** argv)
     return 2;
   }
 
-  std::vector<TS::Quad> quads;
+  std::vector<TS::Panel> quads;
   for(auto f : faces(mesh))
-    quads.push_back(TS::face_quad(f, mesh));
+    quads.push_back(TS::face_panel(f, mesh));
 
   std::vector<double> edges, diagonals, volumes, planarity;
-  for(const TS::Quad& q : quads)
+  for(const TS::Panel& q : quads)
   {
     for(double e : TS::edge_lengths(q)) edges.push_back(e);
     for(double d : TS::diagonal_lengths(q)) diagonals.push_back(d);

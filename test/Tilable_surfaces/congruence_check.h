@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <map>
+#include <limits>
 
 namespace congruence_check {
 
@@ -22,24 +23,26 @@ template <typename Mesh, typename ClusterMap, typename OrientationMap>
 double congruence_by_umeyama(const Mesh& m, ClusterMap cluster, OrientationMap orientation,
                              bool allow_mirror = false)
 {
-  auto deviation = [](const Eigen::Matrix<double, 3, 4>& from, const Eigen::Matrix<double, 3, 4>& to) {
+  typedef Eigen::Matrix<double, 3, Eigen::Dynamic> Corners;  // 4 of a quad, 3 of a triangle
+  auto deviation = [](const Corners& from, const Corners& to) {
     const Eigen::Matrix4d T = Eigen::umeyama(from, to, false);
-    const Eigen::Matrix<double, 3, 4> fitted =
-      (T.topLeftCorner<3, 3>() * from).colwise() + T.topRightCorner<3, 1>();
+    const Corners fitted = (T.topLeftCorner<3, 3>() * from).colwise() + T.topRightCorner<3, 1>();
     return (fitted - to).colwise().norm().maxCoeff();
   };
-  std::map<int, Eigen::Matrix<double, 3, 4> > first;
+  std::map<int, Corners> first;
   double worst = 0;
   for(auto f : faces(m))
   {
-    const TS::Quad q = TS::face_quad(f, m, TS::Quad_orientation(int(get(orientation, f))));
-    Eigen::Matrix<double, 3, 4> x;
-    for(int i = 0; i < 4; ++i) x.col(i) = q[i];
+    const TS::Panel q = TS::face_panel(f, m, TS::Quad_orientation(int(get(orientation, f))));
+    Corners x(3, q.size());
+    for(int i = 0; i < q.size(); ++i) x.col(i) = q[i];
     const auto it = first.emplace(int(get(cluster, f)), x).first;
+    if(it->second.cols() != x.cols())
+      return std::numeric_limits<double>::infinity();  // a cluster of quads and triangles
     double d = deviation(it->second, x);
     if(allow_mirror)
     {
-      Eigen::Matrix<double, 3, 4> mirrored = it->second;
+      Corners mirrored = it->second;
       mirrored.row(2) *= -1;
       d = (std::min)(d, deviation(mirrored, x));
     }

@@ -10,6 +10,7 @@
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
+#include <CGAL/Tilable_surfaces/named_parameters.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 
 #include <Eigen/Geometry>
@@ -54,6 +55,12 @@ inline Clustering add_clustering_maps(Mesh& mesh)
   return c;
 }
 
+// The named parameters of the maps of `c`.
+inline auto clustering_parameters(const Clustering& c)
+{
+  return TS::parameters::face_cluster_map(c.cluster).face_orientation_map(c.orientation);
+}
+
 // Every face its own cluster, orientation 0.
 inline Clustering every_face_alone(Mesh& mesh)
 {
@@ -71,11 +78,11 @@ inline Clustering assign_to_seeds(Mesh& mesh, const std::vector<Face>& seeds)
   c.K = int(seeds.size());
   for(Face f : faces(mesh))
   {
-    const TS::Quad q = TS::face_quad(f, mesh);
+    const TS::Panel q = TS::face_panel(f, mesh);
     double best = (std::numeric_limits<double>::max)();
     for(int s = 0; s < c.K; ++s)
     {
-      const TS::Quad_match m = TS::best_match(TS::face_quad(seeds[s], mesh), q);
+      const TS::Quad_match m = TS::best_match(TS::face_panel(seeds[s], mesh), q);
       if(m.dissimilarity < best)
       {
         best = m.dissimilarity;
@@ -102,9 +109,9 @@ inline Clustering greedy_clustering(Mesh& mesh, int K)
   std::vector<double> distance(all.size(), (std::numeric_limits<double>::max)());
   while(int(seeds.size()) < K)
   {
-    const TS::Quad s = TS::face_quad(seeds.back(), mesh);
+    const TS::Panel s = TS::face_panel(seeds.back(), mesh);
     for(std::size_t i = 0; i < all.size(); ++i)
-      distance[i] = (std::min)(distance[i], TS::dissimilarity(s, TS::face_quad(all[i], mesh)));
+      distance[i] = (std::min)(distance[i], TS::dissimilarity(s, TS::face_panel(all[i], mesh)));
     seeds.push_back(all[std::max_element(distance.begin(), distance.end()) - distance.begin()]);
   }
   return assign_to_seeds(mesh, seeds);
@@ -116,12 +123,12 @@ inline Clustering greedy_clustering(Mesh& mesh, int K)
 // congruence error from above, and is at most twice it.
 inline double pairwise_congruence_error(const Mesh& mesh, const Clustering& c)
 {
-  std::vector<TS::Quad> first(c.K);
+  std::vector<TS::Panel> first(c.K);
   std::vector<bool> seen(c.K, false);
   double worst = 0;
   for(Face f : faces(mesh))
   {
-    const TS::Quad q = TS::face_quad(f, mesh, TS::Quad_orientation(c.orientation[f]));
+    const TS::Panel q = TS::face_panel(f, mesh, TS::Quad_orientation(c.orientation[f]));
     const int k = c.cluster[f];
     if(!seen[k])
     {

@@ -88,11 +88,14 @@ std::vector<Bad_input> bad_inputs()
        in.mesh.set_next(h, in.mesh.next(in.mesh.next(h)));
        return in; },
      TS::Invalid_input::MESH, none, "not reciprocal", false},
-    {"triangle face", [] {
+    {"pentagon face", [] {
        Case_input in = two_squares();
-       in.mesh.add_face(Mesh::Vertex_index(2), in.mesh.add_vertex(Point(3, 0.5, 0)), Mesh::Vertex_index(5));
+       const Mesh::Vertex_index a = in.mesh.add_vertex(Point(3, 0, 0)), b = in.mesh.add_vertex(Point(3.5, 0.5, 0)),
+                                c = in.mesh.add_vertex(Point(3, 1, 0));
+       const std::vector<Mesh::Vertex_index> pentagon{Mesh::Vertex_index(2), a, b, c, Mesh::Vertex_index(5)};
+       in.mesh.add_face(pentagon);
        return in; },
-     TS::Invalid_input::FACE, 2, "has 3 vertices", false},
+     TS::Invalid_input::FACE, 2, "has 5 vertices; only quads and triangles", false},
     {"overflowing coordinates", [] {
        return two_squares([](std::vector<Point>& p) { for(Point& q : p) q = Point(1e200 * q.x(), 1e200 * q.y(), 0); }); },
      TS::Invalid_input::VERTEX, 1, "overflows", false},

@@ -113,13 +113,13 @@ void check_run_on(const std::string& surface, int k, const std::string& catalog_
   // The panels of the PLY fit their molds as the report says: each instance,
   // read in its orientation, against the cluster's first instance.
   const double scale = TS::mean_edge_length(output);
-  std::vector<std::vector<TS::Quad> > instances(static_cast<std::size_t>(k));
+  std::vector<std::vector<TS::Panel> > instances(static_cast<std::size_t>(k));
   for(auto f : faces(output))
     instances[std::size_t(cluster.first[f])].push_back(
-      TS::face_quad(f, output, TS::Quad_orientation(int(orientation.first[f]))));
+      TS::face_panel(f, output, TS::Quad_orientation(int(orientation.first[f]))));
   double worst = 0;
   for(const auto& group : instances)
-    for(const TS::Quad& q : group)
+    for(const TS::Panel& q : group)
       worst = (std::max)(worst, TS::rigid_fit_deviation(group.front(), q) / scale);
   const double reported = report["congruence_error"]["worst"].get<double>();
   EXPECT_LE(worst, 2 * reported + 1e-12) << "reported " << reported;
@@ -266,7 +266,7 @@ TEST(CommandLine, BadInputsExitWithCodeTwoAndWriteNothing)
 
   expect_refused(dir, (dir / "missing.off").string() + " -k 3" + out, "no such file");
   expect_refused(dir, (dir / "garbage.off").string() + " -k 3" + out, "has 'zero', not a number");
-  expect_refused(dir, data_dir + "/mushroom.off -k 3" + out, "only quad meshes");
+  expect_refused(dir, data_dir + "/double-torus-example.off -k 3" + out, "only quads and triangles");
   expect_refused(dir, saddle + " -k 0" + out, "-k must be at least 1");
   expect_refused(dir, saddle + " -k 101" + out, "more than the 100 faces");
   expect_refused(dir, saddle + " -k 3 --frobnicate" + out, "frobnicate");

@@ -117,10 +117,10 @@ std::size_t number_of_clusters(const Mesh& m, const Maps& mp)
 }
 
 // sum_i |q_o(i) - T(p_i)|, T the best rigid fit of p onto q relabelled by o.
-double sum_of_distances(const TS::Quad& p, const TS::Quad& q, TS::Quad_orientation o,
+double sum_of_distances(const TS::Panel& p, const TS::Panel& q, TS::Quad_orientation o,
                         bool allow_mirror = false)
 {
-  const TS::Quad t = TS::reoriented(q, o);
+  const TS::Panel t = TS::reoriented(q, o);
   const TS::Rigid_fit fit = TS::best_rigid_fit(p, t, allow_mirror);
   double sum = 0;
   for(int i = 0; i < 4; ++i) sum += (t[i] - fit(p[i])).norm();
@@ -135,8 +135,8 @@ void expect_admissible_orientations(const Mesh& m, const Maps& mp, const TS::Clu
   const double scale = TS::mean_edge_length(m);
   for(Face f : faces(m))
   {
-    const TS::Quad& s = r.s_quads[mp.cluster[f]];
-    const TS::Quad q = TS::face_quad(f, m);
+    const TS::Panel& s = r.s_quads[mp.cluster[f]];
+    const TS::Panel q = TS::face_panel(f, m);
     // Best over the 8 correspondences (quad_shape.h's reference implementation)
     // against the sum of corner distances under the tagged correspondence.
     const double best = TS::best_match(s, q).dissimilarity;
@@ -156,20 +156,20 @@ TEST(FastMatch, SameAsBestMatch)
   std::mt19937 rng(3);
   std::uniform_real_distribution<double> u(-1, 1);
   auto random_quad = [&] {
-    TS::Quad q;
+    TS::Panel q;
     for(auto& p : q) p = Eigen::Vector3d(u(rng), u(rng), u(rng));
     return q;
   };
-  auto perturbed = [&](TS::Quad q, double eps) {
+  auto perturbed = [&](TS::Panel q, double eps) {
     for(auto& p : q) p += eps * Eigen::Vector3d(u(rng), u(rng), u(rng));
     return q;
   };
-  auto moved = [&](const TS::Quad& q) {
+  auto moved = [&](const TS::Panel& q) {
     const Eigen::Matrix3d r =
       Eigen::Quaterniond(Eigen::Vector4d(u(rng), u(rng), u(rng), u(rng)).normalized())
         .toRotationMatrix();
     const Eigen::Vector3d t(u(rng), u(rng), u(rng));
-    TS::Quad m;
+    TS::Panel m;
     for(int i = 0; i < 4; ++i) m[i] = r * q[i] + t;
     return m;
   };
@@ -177,22 +177,22 @@ TEST(FastMatch, SameAsBestMatch)
     const double a = 1 + u(rng), b = 1 + u(rng), c = 0.5 * (1 + u(rng));
     switch(kind)
     {
-      case 0: return TS::Quad{{{0, 0, 0}, {a, 0, 0}, {a, b, 0}, {0, b, 0}}};   // rectangle
-      case 1: return TS::Quad{{{0, 0, 0}, {a, 0, 0}, {a, a, 0}, {0, a, 0}}};   // square
-      case 2: return TS::Quad{{{0, 0, 0}, {a, c, 0}, {0, b, 0}, {-a, c, 0}}};  // kite
-      default: return TS::Quad{{{0, 0, 0}, {a, 0, c}, {a, b, 0}, {0, b, c}}};  // skew, symmetric
+      case 0: return TS::Panel{{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(a, 0, 0), Eigen::Vector3d(a, b, 0), Eigen::Vector3d(0, b, 0)}};   // rectangle
+      case 1: return TS::Panel{{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(a, 0, 0), Eigen::Vector3d(a, a, 0), Eigen::Vector3d(0, a, 0)}};   // square
+      case 2: return TS::Panel{{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(a, c, 0), Eigen::Vector3d(0, b, 0), Eigen::Vector3d(-a, c, 0)}};  // kite
+      default: return TS::Panel{{Eigen::Vector3d(0, 0, 0), Eigen::Vector3d(a, 0, c), Eigen::Vector3d(a, b, 0), Eigen::Vector3d(0, b, c)}};  // skew, symmetric
     }
   };
-  std::vector<std::pair<TS::Quad, TS::Quad> > cases;
+  std::vector<std::pair<TS::Panel, TS::Panel> > cases;
   for(int i = 0; i < 300; ++i)
     cases.push_back({random_quad(), random_quad()});
   for(double eps : {0.0, 1e-12, 1e-8, 1e-4, 1e-2})
     for(int i = 0; i < 200; ++i)
     {
-      const TS::Quad p = i % 2 ? special_quad(i % 8 / 2) : perturbed(random_quad(), 0);
-      TS::Quad flat = p;
+      const TS::Panel p = i % 2 ? special_quad(i % 8 / 2) : perturbed(random_quad(), 0);
+      TS::Panel flat = p;
       for(auto& x : flat) x.z() *= eps;  // near-planar version of a random quad
-      const TS::Quad base = i % 2 ? p : flat;
+      const TS::Panel base = i % 2 ? p : flat;
       cases.push_back({perturbed(base, eps), moved(perturbed(base, eps))});
       cases.push_back({perturbed(base, eps), random_quad()});
     }
@@ -204,7 +204,7 @@ TEST(FastMatch, SameAsBestMatch)
       const TS::Quad_match b = TS::internal::fast_best_match(c.first, c.second, policy);
       ASSERT_NEAR(a.dissimilarity, b.dissimilarity, 1e-9);
       // The fit found must achieve the dissimilarity found.
-      const TS::Quad t = TS::reoriented(c.second, b.orientation);
+      const TS::Panel t = TS::reoriented(c.second, b.orientation);
       double sum = 0;
       for(int i = 0; i < 4; ++i) sum += (t[i] - b.fit(c.first[i])).norm();
       ASSERT_NEAR(sum, b.dissimilarity, 1e-9);
@@ -237,7 +237,7 @@ TEST(CanonicalFaceOrder, BreadthFirstFromTheFaceFarthestFromTheCentroid)
   Mesh mesh = grid<Mesh>(3, 2);
   mesh.point(Mesh::Vertex_index(11)) = Point(7, 3, 0);
   const auto fim = CGAL::get_initialized_face_index_map(mesh);
-  const std::vector<TS::Quad> quads = TS::internal::face_quads(mesh, fim, CGAL::parameters::default_values());
+  const std::vector<TS::Panel> quads = TS::internal::face_quads(mesh, fim, CGAL::parameters::default_values());
   const std::vector<std::size_t> rank = TS::internal::canonical_face_ranks(mesh, fim, quads);
   EXPECT_EQ(rank, (std::vector<std::size_t>{5, 3, 1, 4, 2, 0}));
 }
@@ -304,7 +304,7 @@ TEST(ClusterQuads, ErrorsLeaveTheMapsUntouched)
   for(Face f : faces(m)) { mp.cluster[f] = 77; mp.orientation[f] = 5; }
   EXPECT_THROW(cluster(m, mp, 0), TS::Invalid_input);
   EXPECT_THROW(cluster(m, mp, m.number_of_faces() + 1), TS::Invalid_input);
-  Mesh mixed = read("mushroom");
+  Mesh mixed = read("double-torus-example");  // pentagons and larger faces
   Maps mixed_maps = maps(mixed);
   for(Face f : faces(mixed)) mixed_maps.cluster[f] = 77;
   EXPECT_THROW(cluster(mixed, mixed_maps, 3), TS::Invalid_input);
@@ -359,7 +359,7 @@ Face nearest_face(const Mesh& m, const Eigen::Vector3d& p)
   double best_d = std::numeric_limits<double>::max();
   for(Face f : faces(m))
   {
-    const TS::Quad q = TS::face_quad(f, m);
+    const TS::Panel q = TS::face_panel(f, m);
     const double d = (0.25 * (q[0] + q[1] + q[2] + q[3]) - p).norm();
     if(d < best_d) { best_d = d; best = f; }
   }
@@ -373,7 +373,7 @@ void expect_rotation_invariant(const char* surface, std::size_t k, const Eigen::
   cluster(m, mp, k);
   for(Face f : faces(m))
   {
-    const TS::Quad q = TS::face_quad(f, m);
+    const TS::Panel q = TS::face_panel(f, m);
     const Face g = nearest_face(m, rotation * (0.25 * (q[0] + q[1] + q[2] + q[3])));
     EXPECT_EQ(mp.cluster[f], mp.cluster[g]) << surface << ": faces " << int(f) << ", " << int(g);
   }
@@ -403,7 +403,7 @@ double exact_weight(const Mesh& m, const Maps& mp)
   for(std::size_t i = 0; i < f.size(); ++i)
     for(std::size_t j = i + 1; j < f.size(); ++j)
       if(mp.cluster[f[i]] == mp.cluster[f[j]])
-        w += TS::internal::fast_best_match(TS::face_quad(f[i], m), TS::face_quad(f[j], m)).dissimilarity;
+        w += TS::internal::fast_best_match(TS::face_panel(f[i], m), TS::face_panel(f[j], m)).dissimilarity;
   return w;
 }
 

@@ -56,20 +56,22 @@ struct Recorder
 
 TEST(TileCountSearch, FindsTheThresholdOfAMonotoneTestTryingEachKOnce)
 {
+  // k_min = 2: a mesh of quads and triangles, where K = 1 cannot be asked.
+  for(std::size_t k_min : {1, 2})
   for(std::size_t k_max : {1, 2, 7, 100})
     for(std::size_t first : {1, 2, 5, 60, 200})
-      for(std::size_t threshold = 1; threshold <= k_max + 1; ++threshold)
+      for(std::size_t threshold = k_min; threshold <= k_max + 1; ++threshold)
       {
         Recorder passes;
         passes.threshold = threshold;
-        const std::size_t k = TS::internal::smallest_passing_tile_count(first, k_max, std::ref(passes));
+        const std::size_t k = TS::internal::smallest_passing_tile_count(first, k_min, k_max, std::ref(passes));
         EXPECT_EQ(k, threshold) << "k_max " << k_max << " first " << first;
         std::vector<std::size_t> sorted = passes.asked;
         std::sort(sorted.begin(), sorted.end());
         EXPECT_TRUE(std::adjacent_find(sorted.begin(), sorted.end()) == sorted.end()) << "a K asked twice";
         EXPECT_LE(passes.asked.size(), std::size_t(2 * 8 + 2)) << "logarithmic in k_max";
-        for(std::size_t a : passes.asked) EXPECT_TRUE(a >= 1 && a <= k_max);
-        if(k > 1 && k <= k_max)
+        for(std::size_t a : passes.asked) EXPECT_TRUE(a >= k_min && a <= k_max);
+        if(k > k_min && k <= k_max)
           EXPECT_NE(std::find(passes.asked.begin(), passes.asked.end(), k - 1), passes.asked.end())
             << "K - 1 was tried";
       }
@@ -80,7 +82,7 @@ TEST(TileCountSearch, WhateverTheTestTheResultPassedAndKMinusOneFailed)
   // Not monotone: 3 passes, 4 to 6 fail, 7 on pass.
   Recorder passes;
   for(std::size_t k = 1; k <= 12; ++k) passes.table[k] = (k == 3 || k >= 7);
-  const std::size_t k = TS::internal::smallest_passing_tile_count(6, 12, std::ref(passes));
+  const std::size_t k = TS::internal::smallest_passing_tile_count(6, 1, 12, std::ref(passes));
   EXPECT_TRUE(passes.table.at(k));
   EXPECT_FALSE(passes.table.at(k - 1));
   EXPECT_NE(std::find(passes.asked.begin(), passes.asked.end(), k - 1), passes.asked.end());

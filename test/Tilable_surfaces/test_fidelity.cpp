@@ -168,7 +168,7 @@ TEST(Fidelity, TubeKeepsItsWaist)
   EXPECT_NEAR(loop_radius(mesh, waist, around), loop_radius(input, waist, around),
               0.05 * loop_radius(input, waist, around));
   // More than one shape: some two S-quads differ by more than 1% of an edge.
-  const std::vector<TS::Quad>& s = r.optimization.measure.s_quads;
+  const std::vector<TS::Panel>& s = r.optimization.measure.s_quads;
   double most_different = 0;
   for(std::size_t a = 0; a < s.size(); ++a)
     for(std::size_t b = a + 1; b < s.size(); ++b)

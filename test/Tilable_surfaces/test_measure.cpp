@@ -34,11 +34,6 @@ Mesh unit_square()
   return m;
 }
 
-auto clustering_parameters(const Clustering& c)
-{
-  return TS::parameters::face_cluster_map(c.cluster).face_orientation_map(c.orientation);
-}
-
 } // namespace
 
 TEST(Measure, TwoUnitSquaresAreExactlyTilable)
@@ -60,7 +55,7 @@ TEST(Measure, TwoUnitSquaresAreExactlyTilable)
                   m.normalized_terms.volume})
     EXPECT_EQ(t, 0.0);
   // The S-quad is the unit square, t0 at the origin and t1 on +x.
-  const TS::Quad& s = m.s_quads[0];
+  const TS::Panel& s = m.s_quads[0];
   const Eigen::Vector3d expected[4] = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}};
   for(int i = 0; i < 4; ++i)
     EXPECT_LE((s[i] - expected[i]).norm(), 1e-15) << "corner " << i;
@@ -125,7 +120,7 @@ TEST(Measure, OptimizedSurfaceMeasuredTwiceAgrees)
   EXPECT_NEAR(m.max_displacement, r.measure.max_displacement, 1e-12);
   EXPECT_LE(pairwise_congruence_error(result, c), 2 * m.congruence_error + 1e-12);
   // Canonical frame of the S-quad.
-  const TS::Quad& s = m.s_quads[0];
+  const TS::Panel& s = m.s_quads[0];
   EXPECT_LE(s[0].norm(), 1e-12);
   EXPECT_GT(s[1].x(), 0.0);
   EXPECT_LE(std::abs(s[1].y()) + std::abs(s[1].z()) + std::abs(s[2].z()), 1e-12);

@@ -40,7 +40,7 @@ TEST(MirroredPanels, AMirrorPairIsOneMoldAndDoesNotMove)
 {
   Mesh mesh = mirror_pair();
   const Mesh input = mesh;
-  const TS::Quad q0 = TS::face_quad(*faces(mesh).begin(), mesh), q1 = TS::face_quad(*std::next(faces(mesh).begin()), mesh);
+  const TS::Panel q0 = TS::face_panel(*faces(mesh).begin(), mesh), q1 = TS::face_panel(*std::next(faces(mesh).begin()), mesh);
   ASSERT_GT(TS::dissimilarity(q0, q1, TS::PROPER_RIGID_MOTIONS), 1e-2) << "not congruent by a proper motion";
   ASSERT_LT(TS::dissimilarity(q0, q1, TS::ALLOW_MIRRORED_PANELS), 1e-12) << "a mirror image";
 

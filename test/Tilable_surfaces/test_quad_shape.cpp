@@ -1,4 +1,4 @@
-// Quad shape analysis: facts that can be checked by hand or by construction.
+// Panel shape analysis: facts that can be checked by hand or by construction.
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 
 #include <gtest/gtest.h>
@@ -17,9 +17,9 @@ using Eigen::Vector3d;
 namespace {
 
 // A generic non-planar quad with no symmetry (all edges and diagonals distinct).
-TS::Quad skew_quad()
+TS::Panel skew_quad()
 {
-  return TS::Quad{{Vector3d(0, 0, 0), Vector3d(1.3, 0.1, 0.05), Vector3d(1.5, 0.9, 0.3),
+  return TS::Panel{{Vector3d(0, 0, 0), Vector3d(1.3, 0.1, 0.05), Vector3d(1.5, 0.9, 0.3),
                    Vector3d(-0.1, 1.1, -0.2)}};
 }
 
@@ -30,24 +30,24 @@ Eigen::Matrix3d random_rotation(std::mt19937& rng)
   return r.normalized().toRotationMatrix();
 }
 
-TS::Quad moved(const TS::Quad& q, const Eigen::Matrix3d& r, const Vector3d& t)
+TS::Panel moved(const TS::Panel& q, const Eigen::Matrix3d& r, const Vector3d& t)
 {
-  TS::Quad m;
+  TS::Panel m;
   for(int i = 0; i < 4; ++i) m[i] = r * q[i] + t;
   return m;
 }
 
-TS::Quad mirrored_x(const TS::Quad& q)
+TS::Panel mirrored_x(const TS::Panel& q)
 {
-  TS::Quad m = q;
+  TS::Panel m = q;
   for(auto& p : m) p.x() = -p.x();
   return m;
 }
 
 // The face that carries template q with correspondence o: v[o(i)] = q[i].
-TS::Quad face_with_orientation(const TS::Quad& q, TS::Quad_orientation o)
+TS::Panel face_with_orientation(const TS::Panel& q, TS::Quad_orientation o)
 {
-  TS::Quad v;
+  TS::Panel v;
   for(int i = 0; i < 4; ++i) v[o(i)] = q[i];
   return v;
 }
@@ -112,7 +112,7 @@ TEST(QuadOrientation, TemplateEdgesGoToTheFaceEdgeWithTheSameEndpoints)
 TEST(QuadShape, HandComputedLengthsVolumeAndPlanarity)
 {
   const double h = 0.25;
-  const TS::Quad q{{Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(1, 1, 0), Vector3d(0, 1, h)}};
+  const TS::Panel q{{Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(1, 1, 0), Vector3d(0, 1, h)}};
   const auto e = TS::edge_lengths(q);
   EXPECT_DOUBLE_EQ(e[0], 1.0);
   EXPECT_DOUBLE_EQ(e[1], 1.0);
@@ -128,7 +128,7 @@ TEST(QuadShape, HandComputedLengthsVolumeAndPlanarity)
   // The diagonals: t0 + s (1,1,0) and t1 + u (-1,1,h); their common normal
   // (h, -h, 2) and the offset t1 - t0 = (1,0,0) give h / sqrt(2 h^2 + 4).
   EXPECT_DOUBLE_EQ(TS::diagonal_distance(q), h / std::sqrt(2 * h * h + 4));
-  TS::Quad flat = q;
+  TS::Panel flat = q;
   flat[3].z() = 0;
   EXPECT_EQ(TS::planarity_defect(flat), 0.0);
   EXPECT_EQ(TS::diagonal_distance(flat), 0.0);
@@ -136,7 +136,7 @@ TEST(QuadShape, HandComputedLengthsVolumeAndPlanarity)
 
 TEST(QuadShape, SignedVolumeFollowsTheSignOfTheRelabelling)
 {
-  const TS::Quad q = skew_quad();
+  const TS::Panel q = skew_quad();
   const double v = TS::signed_volume(q);
   ASSERT_GT(std::abs(v), 1e-3);
   for(int o = 0; o < 8; ++o)
@@ -156,14 +156,14 @@ TEST(QuadShape, SignedVolumeFollowsTheSignOfTheRelabelling)
 TEST(QuadShape, RigidCopyHasZeroDissimilarityAndTheAppliedOrientation)
 {
   std::mt19937 rng(1);
-  const TS::Quad q = skew_quad();
+  const TS::Panel q = skew_quad();
   for(int trial = 0; trial < 5; ++trial)
   {
     const Eigen::Matrix3d r = random_rotation(rng);
     const Vector3d t(3.0 * trial, -2.0, 7.5);
     for(int o = 0; o < 8; ++o)
     {
-      const TS::Quad face = face_with_orientation(moved(q, r, t), TS::Quad_orientation(o));
+      const TS::Panel face = face_with_orientation(moved(q, r, t), TS::Quad_orientation(o));
       const TS::Quad_match match = TS::best_match(q, face);
       EXPECT_LT(match.dissimilarity, 1e-12) << "o=" << o;
       EXPECT_EQ(match.orientation.index(), o);
@@ -175,22 +175,22 @@ TEST(QuadShape, RigidCopyHasZeroDissimilarityAndTheAppliedOrientation)
 
 TEST(QuadShape, MirrorImageIsNotACopyUnlessPlanar)
 {
-  const TS::Quad q = skew_quad();
+  const TS::Panel q = skew_quad();
   const TS::Quad_match match = TS::best_match(q, mirrored_x(q));
   EXPECT_GT(match.dissimilarity, 1e-2);
   EXPECT_NEAR(match.fit.rotation.determinant(), 1.0, 1e-12);
   // ... but with mirrored panels allowed it is one.
   EXPECT_LT(TS::dissimilarity(q, mirrored_x(q), TS::ALLOW_MIRRORED_PANELS), 1e-12);
 
-  TS::Quad planar = q;
+  TS::Panel planar = q;
   for(auto& p : planar) p.z() = 0;
   EXPECT_LT(TS::dissimilarity(planar, mirrored_x(planar)), 1e-12);
 }
 
 TEST(QuadShape, TurnedOverCopiesNeedTheReversedOrientations)
 {
-  const TS::Quad q = skew_quad();
-  const TS::Quad face = face_with_orientation(q, TS::Quad_orientation(5));
+  const TS::Panel q = skew_quad();
+  const TS::Panel face = face_with_orientation(q, TS::Quad_orientation(5));
   EXPECT_LT(TS::dissimilarity(q, face), 1e-12);
   EXPECT_GT(TS::dissimilarity(q, face, TS::NO_TURNED_OVER_PANELS), 1e-2);
   EXPECT_LT(TS::best_match(q, face, TS::NO_TURNED_OVER_PANELS).orientation.index(), 4);
@@ -202,7 +202,7 @@ TEST(QuadShape, DissimilarityIsSymmetricWithInverseOrientation)
   std::uniform_real_distribution<double> u(-1, 1);
   for(int trial = 0; trial < 20; ++trial)
   {
-    TS::Quad p, q;
+    TS::Panel p, q;
     for(int i = 0; i < 4; ++i)
     {
       p[i] = skew_quad()[i] + 0.3 * Vector3d(u(rng), u(rng), u(rng));
@@ -216,14 +216,14 @@ TEST(QuadShape, DissimilarityIsSymmetricWithInverseOrientation)
 
 TEST(QuadShape, DissimilarityGrowsWithPerturbation)
 {
-  const TS::Quad q = skew_quad();
+  const TS::Panel q = skew_quad();
   const std::array<Vector3d, 4> direction{{Vector3d(0.3, -0.2, 0.5), Vector3d(-0.4, 0.1, 0.2),
                                            Vector3d(0.2, 0.6, -0.3), Vector3d(-0.1, -0.5, 0.4)}};
   double previous = TS::dissimilarity(q, q);
   EXPECT_LT(previous, 1e-14);
   for(double eps : {1e-4, 1e-3, 1e-2, 1e-1})
   {
-    TS::Quad p = q;
+    TS::Panel p = q;
     for(int i = 0; i < 4; ++i) p[i] += eps * direction[i];
     const double s = TS::dissimilarity(q, p);
     EXPECT_GT(s, previous) << "eps=" << eps;
@@ -234,8 +234,8 @@ TEST(QuadShape, DissimilarityGrowsWithPerturbation)
 TEST(QuadShape, CongruenceErrorOfExactCopiesIsRoundOff)
 {
   std::mt19937 rng(3);
-  const TS::Quad q = skew_quad();
-  std::vector<TS::Quad> copies;
+  const TS::Panel q = skew_quad();
+  std::vector<TS::Panel> copies;
   for(int i = 0; i < 50; ++i)
     copies.push_back(moved(q, random_rotation(rng), Vector3d(i, 2.0 * i, -3.0)));
   EXPECT_LT(TS::congruence_error(copies, q), 1e-13);
@@ -245,7 +245,7 @@ TEST(QuadShape, CongruenceErrorOfExactCopiesIsRoundOff)
   // it), so no residual exceeds delta. Lower bound: a rigid motion keeps
   // distances, so |d'_ij - d_ij| <= |r_i| + |r_j| <= 2 max |r|.
   const double delta = 0.01;
-  const TS::Quad before = copies[17];
+  const TS::Panel before = copies[17];
   copies[17][2] += Vector3d(0.6, -0.48, 0.64) * delta;
   double distance_change = 0;
   for(int j = 0; j < 4; ++j)
@@ -262,11 +262,11 @@ TEST(QuadShape, CongruenceErrorOfExactCopiesIsRoundOff)
 TEST(QuadShape, DescriptorIsInvariantUnderMotionAndRelabelling)
 {
   std::mt19937 rng(5);
-  const TS::Quad q = skew_quad();
+  const TS::Panel q = skew_quad();
   const TS::Quad_descriptor d = TS::shape_descriptor(q);
   for(int o = 0; o < 8; ++o)
   {
-    const TS::Quad other = TS::reoriented(moved(q, random_rotation(rng), Vector3d(1, 2, 3)),
+    const TS::Panel other = TS::reoriented(moved(q, random_rotation(rng), Vector3d(1, 2, 3)),
                                           TS::Quad_orientation(o));
     const TS::Quad_descriptor e = TS::shape_descriptor(other);
     for(int i = 0; i < 7; ++i)

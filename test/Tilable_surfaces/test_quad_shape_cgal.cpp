@@ -40,13 +40,13 @@ void check_unit_grid()
   assert(std::abs(TS::mean_edge_length(mesh) - 1.0) < 1e-15);
 
   // Orientation 1: corner i is face vertex i + 1, so corner 0 is (1,0,0).
-  const TS::Quad q = TS::face_quad(f0, mesh, TS::Quad_orientation(1));
+  const TS::Panel q = TS::face_panel(f0, mesh, TS::Quad_orientation(1));
   assert(q[0] == Eigen::Vector3d(1, 0, 0));
   assert(q[1] == Eigen::Vector3d(1, 1, 0));
   assert(q[2] == Eigen::Vector3d(0, 1, 0));
   assert(q[3] == Eigen::Vector3d(0, 0, 0));
   // Orientation 4 reverses: corners are face vertices 0, 3, 2, 1.
-  const TS::Quad r = TS::face_quad(f0, mesh, TS::Quad_orientation(4));
+  const TS::Panel r = TS::face_panel(f0, mesh, TS::Quad_orientation(4));
   assert(r[1] == Eigen::Vector3d(0, 1, 0));
   assert(r[3] == Eigen::Vector3d(1, 0, 0));
   // Face edge j goes from face vertex j to j + 1: (v0,v1), (v1,v4), (v4,v3),
@@ -61,7 +61,7 @@ void check_unit_grid()
   }
   // Both faces are unit squares: congruent.
   for(auto f : faces(mesh))
-    assert(TS::dissimilarity(TS::face_quad(f0, mesh), TS::face_quad(f, mesh)) < 1e-14);
+    assert(TS::dissimilarity(TS::face_panel(f0, mesh), TS::face_panel(f, mesh)) < 1e-14);
 }
 
 int main()
@@ -85,7 +85,7 @@ int main()
   assert(TS::mean_edge_length(saddle) >= 0.2);
   for(auto f : faces(saddle))
   {
-    const TS::Quad q = TS::face_quad(f, saddle);
+    const TS::Panel q = TS::face_panel(f, saddle);
     // Grid faces project to 0.2 x 0.2 squares in xy.
     for(int k = 0; k < 4; ++k)
     {

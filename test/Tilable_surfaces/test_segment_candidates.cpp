@@ -53,7 +53,7 @@ TEST(SegmentCandidates, TubeIsAGridOfRingsAndLines)
         EXPECT_EQ(f / around, up ? r : rings - 1 - r);
         // Corners 3 and 0 are the edge shared with the next face of the row.
         const std::size_t g = grid.face_at[r * grid.columns + (c + 1) % grid.columns];
-        const TS::Quad next_face = TS::face_quad(Face(g), m);
+        const TS::Panel next_face = TS::face_panel(Face(g), m);
         for(int corner : {3, 0})
           EXPECT_TRUE(std::any_of(next_face.begin(), next_face.end(), [&](const Eigen::Vector3d& p) {
             return p == grid.corners[f][corner];

@@ -22,7 +22,7 @@ TS::Tile lifted_square(double h)
   TS::Tile t;
   t.id = 3;
   t.instance_count = 17;
-  t.corners = TS::Quad{{Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(1, 1, 0), Vector3d(0, 1, h)}};
+  t.corners = TS::Panel{{Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(1, 1, 0), Vector3d(0, 1, h)}};
   t.worst_deviation = 2.5e-7;
   t.mirrored_count = 5;
   return t;
@@ -42,7 +42,7 @@ TEST(TileCatalog, CsvHasTheHandComputedValues)
   std::getline(in, row);
   std::getline(in, flat);
   const std::vector<std::string> names = csv_cells(header), cells = csv_cells(row);
-  ASSERT_EQ(names.size(), 25u);
+  ASSERT_EQ(names.size(), 26u);
   ASSERT_EQ(cells.size(), names.size());
   auto value = [&](const std::string& name) {
     for(std::size_t i = 0; i < names.size(); ++i)
@@ -65,8 +65,45 @@ TEST(TileCatalog, CsvHasTheHandComputedValues)
   EXPECT_EQ(value("worst_deviation"), 2.5e-7);
   // The diagonals (0,0,0)-(1,1,0) and (1,0,0)-(0,1,h) are h / sqrt(2 h^2 + 4) apart.
   EXPECT_EQ(value("planar"), 0) << "diagonals 0.24 apart";
-  EXPECT_EQ(std::stod(csv_cells(flat)[names.size() - 3]), 0.0) << "a flat tile has planarity 0";
-  EXPECT_EQ(csv_cells(flat)[names.size() - 2], "1") << "and is planar";
+  EXPECT_EQ(std::stod(csv_cells(flat)[names.size() - 4]), 0.0) << "a flat tile has planarity 0";
+  EXPECT_EQ(csv_cells(flat)[names.size() - 3], "1") << "and is planar";
+  EXPECT_EQ(cells.back(), "quad");
+}
+
+TEST(TileCatalog, AnSTriangleRowHasItsThreeEdgesAndLeavesTheQuadColumnsEmpty)
+{
+  TS::Tile t;
+  t.id = 1;
+  t.instance_count = 2;
+  t.corners = TS::Panel(Vector3d(0, 0, 0), Vector3d(3, 0, 0), Vector3d(0, 4, 0));
+  std::ostringstream out;
+  ASSERT_TRUE(TS::IO::write_tile_catalog_CSV(out, {t}));
+  std::istringstream in(out.str());
+  std::string header, row;
+  std::getline(in, header);
+  std::getline(in, row);
+  const std::vector<std::string> names = csv_cells(header), cells = csv_cells(row);
+  ASSERT_EQ(cells.size(), names.size());
+  auto cell = [&](const std::string& name) {
+    for(std::size_t i = 0; i < names.size(); ++i)
+      if(names[i] == name) return cells[i];
+    ADD_FAILURE() << "no column " << name;
+    return std::string();
+  };
+  // The 3-4-5 right triangle: edges t0t1 = 3, t1t2 = 5, t2t0 = 4.
+  EXPECT_EQ(std::stod(cell("e01")), 3.0);
+  EXPECT_EQ(std::stod(cell("e12")), 5.0);
+  EXPECT_EQ(std::stod(cell("e23")), 4.0);
+  for(const char* empty : {"t3x", "t3y", "t3z", "e30", "d02", "d13"})
+    EXPECT_EQ(cell(empty), "") << empty;
+  EXPECT_EQ(cell("planar"), "1");
+  EXPECT_EQ(cell("kind"), "triangle");
+
+  const nlohmann::json j = TS::IO::tile_catalog_json({t})[0];
+  EXPECT_EQ(j["kind"], "triangle");
+  EXPECT_EQ(j["corners"].size(), 3u);
+  EXPECT_EQ(j["edges"].size(), 3u);
+  EXPECT_EQ(j["diagonals"].size(), 0u);
 }
 
 TEST(TileCatalog, JsonParsesBackWithTheSameNumbers)

@@ -48,10 +48,12 @@ double distance(const Point& a, const Point& b)
 } // namespace internal
 
 /// \ingroup PkgTilableSurfacesRef
-/// The edge-sharing graph of a clustering of the faces of a quad mesh.
+/// The edge-sharing graph of a clustering of the faces of a mesh of quads and
+/// triangles (each cluster holds one kind).
 ///
-/// Its nodes are the 4K S-quad edges (c, k): edge k of cluster c's template
-/// joins corners t_k and t_{k+1}. Every interior mesh edge, shared by faces f
+/// Its nodes are the template edges (c, k) of the K clusters, 4 per S-quad and
+/// 3 per S-triangle: edge k of cluster c's template joins corners t_k and
+/// t_{k+1}. Every interior mesh edge, shared by faces f
 /// and g, links the node of f's template edge that maps onto it with that of
 /// g's; links from a node to itself are ignored and boundary edges link
 /// nothing. Each connected component must take a single length on the tiled
@@ -67,7 +69,7 @@ double distance(const Point& a, const Point& b)
 /// may have the same shape, but a cluster holding both links the edges of
 /// the two rings, and through their neighbours every ring, to one length.
 ///
-/// \tparam PolygonMesh a model of `FaceListGraph` whose faces are quads.
+/// \tparam PolygonMesh a model of `FaceListGraph` whose faces are quads and triangles.
 template <typename PolygonMesh>
 class Edge_sharing_graph
 {
@@ -102,7 +104,8 @@ public:
 
   /// Builds the graph of a clustering of `pm` into `number_of_clusters`
   /// clusters, read from `face_cluster_map` (values 0..K-1) and
-  /// `face_orientation_map` (values 0..7, or `Quad_orientation`).
+  /// `face_orientation_map` (values 0..7, or `Quad_orientation`; those of a
+  /// triangle in 0, 1, 2, 4, 5, 6).
   ///
   /// \cgalNamedParamsBegin
   ///   \cgalParamNBegin{vertex_point_map} the points, checked by `validate_quad_mesh()` and used for
@@ -113,8 +116,9 @@ public:
   /// (`CGAL::get_initialized_edge_index_map(pm)`); `pm` must not change
   /// while the graph is used.
   /// \throws Invalid_input if `pm` fails `validate_quad_mesh()` (with the
-  /// `vertex_point_map` of `np`, if any), or a face has a cluster out of
-  /// 0..K-1 or an orientation out of 0..7.
+  /// `vertex_point_map` of `np`, if any), a face has a cluster out of
+  /// 0..K-1 or an orientation that is not one of its own, or a cluster holds
+  /// both quads and triangles.
   template <typename FaceClusterMap, typename FaceOrientationMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
   Edge_sharing_graph(const PolygonMesh& pm, std::size_t number_of_clusters, FaceClusterMap face_cluster_map,
                      FaceOrientationMap face_orientation_map,
@@ -133,7 +137,7 @@ public:
                      VertexPointMap vpm, const internal::Face_clustering& clustering)
     : m_edge_index_map(CGAL::get_initialized_edge_index_map(pm))
   {
-    reset(clustering.number_of_clusters);
+    reset(internal::cluster_corner_counts(pm, fim, clustering));
     // The S-quad edges of the two sides of every mesh edge. Each mesh edge's
     // length goes to the lower of the two, and every S-quad edge gets its
     // lengths before any link, so that the spread the links add depends on
@@ -153,18 +157,20 @@ public:
       const std::size_t c = clustering.label[fi];
       const Quad_orientation orientation = clustering.orientation[fi];
       const auto face_edges = face_edge_halfedges(f, pm);
-      for(int j = 0; j < 4; ++j)
+      const int n = int(face_edges.size());
+      for(int j = 0; j < n; ++j)
       {
         const halfedge_descriptor h = face_edges[std::size_t(j)];
         const std::size_t e = get(m_edge_index_map, edge(h, pm));
+        const std::size_t node = 4 * c + std::size_t(orientation.template_edge(j, n));
         if(sides[e][0] == no_node())
         {
           edge_order.push_back(e);
-          sides[e][0] = 4 * c + orientation.template_edge(j);
+          sides[e][0] = node;
           lengths[e] = internal::distance(get(vpm, source(h, pm)), get(vpm, target(h, pm)));
         }
         else
-          sides[e][1] = 4 * c + orientation.template_edge(j);
+          sides[e][1] = node;
       }
     }
     std::vector<std::size_t> edge_nodes(num_edges(pm), no_node());
@@ -198,12 +204,16 @@ public:
   /// edges of the clusters that are alive.
   std::size_t degree_of_flexibility() const { return m_number_of_components; }
 
-  /// The component (0..DOF-1) of edge `k` (0..3) of cluster `c`'s template.
-  /// Component ids are numbered by first appearance over (c, k) in
-  /// lexicographic order, so they are deterministic.
+  /// The number of corners (and edges) of cluster `c`'s template: 4 for an
+  /// S-quad, 3 for an S-triangle.
+  int corner_count(std::size_t c) const { return m_corners.at(m_slot.at(c)); }
+
+  /// The component (0..DOF-1) of edge `k` (0..`corner_count(c)`-1) of
+  /// cluster `c`'s template. Component ids are numbered by first appearance
+  /// over (c, k) in lexicographic order, so they are deterministic.
   std::size_t component(std::size_t c, int k) const
   {
-    if(c >= m_slot.size() || !m_alive[m_slot[c]] || k < 0 || k > 3)
+    if(c >= m_slot.size() || !m_alive[m_slot[c]] || k < 0 || k >= m_corners[m_slot[c]])
       throw Invalid_input("no S-quad edge (" + std::to_string(c) + ", " + std::to_string(k) +
                           ") in the edge-sharing graph", Invalid_input::PARAMETER);
     update_component_ids();
@@ -218,10 +228,12 @@ public:
     return m_component_id[find(node)];
   }
 
-  /// The 4 components of cluster `c`'s template edges: its *pattern*.
+  /// The components of cluster `c`'s template edges: its *pattern*. An
+  /// S-triangle's has the largest `std::size_t` as its fourth entry.
   std::array<std::size_t, 4> cluster_pattern(std::size_t c) const
   {
-    return {{component(c, 0), component(c, 1), component(c, 2), component(c, 3)}};
+    return {{component(c, 0), component(c, 1), component(c, 2),
+             corner_count(c) == 4 ? component(c, 3) : no_node()}};
   }
 
   /// The spread of the input edge lengths that the links force together: the
@@ -237,10 +249,14 @@ public:
   double length_deviation() const { return m_length_deviation; }
 
   /// `length_deviation()` after `merge_clusters(kept, removed,
-  /// correspondence)`, without merging.
+  /// correspondence)`, without merging; infinite if the two clusters are not
+  /// of the same kind.
   double length_deviation_after_merge(std::size_t kept, std::size_t removed,
                                       Quad_orientation correspondence) const
   {
+    const int n = corner_count(kept);
+    if(corner_count(removed) != n)
+      return std::numeric_limits<double>::infinity();
     // At most 8 components take part, each with its statistics at its slot.
     internal::Small_union_find<8> components;
     std::array<Length_statistics, 8> merged;
@@ -251,10 +267,10 @@ public:
       return components.sets().find(s.first);
     };
     double deviation = m_length_deviation;
-    for(int k = 0; k < 4; ++k)
+    for(int k = 0; k < n; ++k)
     {
       const std::size_t a = slot(4 * m_slot.at(kept) + std::size_t(k)),
-                        b = slot(4 * m_slot.at(removed) + correspondence.face_edge(k));
+                        b = slot(4 * m_slot.at(removed) + std::size_t(correspondence.face_edge(k, n)));
       if(a == b)
         continue;
       deviation += merged[a].deviation_if_joined(merged[b]);
@@ -274,7 +290,7 @@ public:
   /// of `removed` (so the faces of `removed` get orientation
   /// `o * correspondence` in `kept`'s labelling; updating the maps is the
   /// caller's job). Returns the new degree of flexibility, which can only
-  /// decrease.
+  /// decrease. An S-quad and an S-triangle cannot be merged.
   std::size_t merge_clusters(std::size_t kept, std::size_t removed,
                              Quad_orientation correspondence)
   {
@@ -282,8 +298,14 @@ public:
        !m_alive[m_slot[kept]] || !m_alive[m_slot[removed]])
       throw Invalid_input("cannot merge cluster " + std::to_string(removed) + " into cluster " +
                           std::to_string(kept), Invalid_input::PARAMETER);
-    for(int k = 0; k < 4; ++k)
-      link(4 * m_slot[kept] + std::size_t(k), 4 * m_slot[removed] + correspondence.face_edge(k));
+    const int n = m_corners[m_slot[kept]];
+    if(m_corners[m_slot[removed]] != n)
+      throw Invalid_input("cannot merge cluster " + std::to_string(removed) + " into cluster " +
+                          std::to_string(kept) + ": a quad cluster and a triangle cluster",
+                          Invalid_input::PARAMETER);
+    for(int k = 0; k < n; ++k)
+      link(4 * m_slot[kept] + std::size_t(k),
+           4 * m_slot[removed] + std::size_t(correspondence.face_edge(k, n)));
     m_alive[m_slot[removed]] = false;
     m_ids_valid = false;
     return m_number_of_components;
@@ -334,17 +356,23 @@ private:
     }
   };
 
-  void reset(std::size_t number_of_clusters)
+  // Cluster c has nodes 4c .. 4c + corners[c] - 1.
+  void reset(const std::vector<int>& corners)
   {
+    const std::size_t number_of_clusters = corners.size();
     const std::size_t n = 4 * number_of_clusters;
     m_alive.assign(number_of_clusters, true);
+    m_corners = corners;
     m_slot.resize(number_of_clusters);
+    m_number_of_components = 0;
     for(std::size_t c = 0; c < number_of_clusters; ++c)
+    {
       m_slot[c] = c;
+      m_number_of_components += std::size_t(corners[c]);
+    }
     m_sets.reset(n);
     m_lengths.assign(n, Length_statistics());
     m_length_deviation = 0;
-    m_number_of_components = n;
     m_ids_valid = false;
   }
 
@@ -374,7 +402,7 @@ private:
     {
       if(!m_alive[s])
         continue;
-      for(std::size_t k = 0; k < 4; ++k)
+      for(std::size_t k = 0; k < std::size_t(m_corners[s]); ++k)
       {
         std::size_t& id = m_component_id[find(4 * s + k)];
         if(id == no_node())
@@ -391,6 +419,7 @@ private:
   // so copies share it: copying the graph costs O(K), not O(#edges).
   std::shared_ptr<const std::vector<std::size_t> > m_edge_node;
   std::vector<bool> m_alive;          // by slot
+  std::vector<int> m_corners;         // by slot: 4, or 3 for an S-triangle
   std::vector<std::size_t> m_slot;   // the slot (nodes 4 s .. 4 s + 3) of every cluster id
   internal::Union_find<> m_sets;
   std::size_t m_number_of_components = 0;

@@ -693,10 +693,19 @@ private:
     auto badness = [&](std::size_t c) {
       return repair && c < misfit.size() ? misfit[c] : moved[c] / double(size[c]);
     };
+    // The merge that follows a split joins two clusters of one kind (quads
+    // and triangles never share one), other than the two parts: some kind
+    // must have two clusters besides the one split.
+    std::size_t clusters_of_kind[5] = {0, 0, 0, 0, 0};
+    for(std::size_t c = 0; c < number_of_clusters(); ++c)
+      ++clusters_of_kind[edge_sharing_graph().corner_count(c)];
     std::vector<std::size_t> splittable;
     for(std::size_t c = 0; c < number_of_clusters(); ++c)
-      if(size[c] >= 2)
+    {
+      const int kind = edge_sharing_graph().corner_count(c);
+      if(size[c] >= 2 && (clusters_of_kind[kind] >= 2 || clusters_of_kind[7 - kind] >= 2))
         splittable.push_back(c);
+    }
     if(rank >= splittable.size())
       return false;
     std::stable_sort(splittable.begin(), splittable.end(),
@@ -712,8 +721,8 @@ private:
     for(std::size_t a = 0; a < number_of_clusters(); ++a)
       for(std::size_t b = a + 1; b < number_of_clusters(); ++b)
       {
-        if(a == worst && b == new_part)
-          continue; // that would undo the split
+        if((a == worst && b == new_part) || graph.corner_count(a) != graph.corner_count(b))
+          continue; // that would undo the split, or mix quads and triangles
         // The correspondence is not known before the merge: the least spread.
         double spread = std::numeric_limits<double>::infinity();
         for(int o = 0; o < 8; ++o)

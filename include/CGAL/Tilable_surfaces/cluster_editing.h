@@ -41,7 +41,7 @@ Orientation_policy orientation_policy(const NP& np)
 
 // Merges cluster max(a, b) into min(a, b); returns the correspondence between
 // their S-quads, which the edge-sharing graph needs.
-inline Quad_orientation merge_clusters(Face_clustering& fc, const std::vector<Quad>& quads, std::size_t a,
+inline Quad_orientation merge_clusters(Face_clustering& fc, const std::vector<Panel>& quads, std::size_t a,
                                        std::size_t b, Orientation_policy policy)
 {
   fc.check_cluster(a);
@@ -51,6 +51,11 @@ inline Quad_orientation merge_clusters(Face_clustering& fc, const std::vector<Qu
                         Invalid_input::PARAMETER);
   const std::size_t kept = (std::min)(a, b), removed = (std::max)(a, b);
   const std::vector<std::vector<std::size_t> > members = cluster_members(fc.label, fc.number_of_clusters);
+  const int n = members[kept].empty() ? 4 : quads[members[kept].front()].size();
+  if(!members[removed].empty() && quads[members[removed].front()].size() != n)
+    throw Invalid_input("cannot merge cluster " + std::to_string(removed) + " into cluster " +
+                        std::to_string(kept) + ": a quad cluster and a triangle cluster",
+                        Invalid_input::PARAMETER);
   auto s_quad = [&](std::size_t c) {
     std::vector<Quad_orientation> o;
     for(std::size_t f : members[c]) o.push_back(fc.orientation[f]);
@@ -59,7 +64,7 @@ inline Quad_orientation merge_clusters(Face_clustering& fc, const std::vector<Qu
   const Quad_orientation correspondence = fast_best_match(s_quad(kept), s_quad(removed), policy).orientation;
   for(std::size_t f : members[removed])
   {
-    fc.orientation[f] = fc.orientation[f] * correspondence;
+    fc.orientation[f] = compose(fc.orientation[f], correspondence, n);
     fc.label[f] = kept;
   }
   for(std::size_t& l : fc.label)
@@ -69,7 +74,7 @@ inline Quad_orientation merge_clusters(Face_clustering& fc, const std::vector<Qu
 }
 
 // Splits cluster `c` in two; the second part gets the id K.
-inline void split_cluster(Face_clustering& fc, const std::vector<Quad>& quads, std::size_t c,
+inline void split_cluster(Face_clustering& fc, const std::vector<Panel>& quads, std::size_t c,
                           Orientation_policy policy, CGAL::Random& random)
 {
   fc.check_cluster(c);
@@ -89,7 +94,7 @@ inline void split_cluster(Face_clustering& fc, const std::vector<Quad>& quads, s
   ++fc.number_of_clusters;
   for(const std::vector<std::size_t>& p : part)
   {
-    const Quad s_quad = procrustes_mean(quads, p, policy);
+    const Panel s_quad = procrustes_mean(quads, p, policy);
     for(std::size_t f : p)
       fc.orientation[f] = fast_best_match(s_quad, quads[f], policy).orientation;
   }
@@ -99,7 +104,7 @@ inline void split_cluster(Face_clustering& fc, const std::vector<Quad>& quads, s
 // `tolerance` chosen for flexibility.
 template <typename PolygonMesh, typename FaceIndexMap>
 void retag_orientations(Face_clustering& fc, const PolygonMesh& pm, FaceIndexMap fim,
-                        const std::vector<Quad>& quads, Orientation_policy policy, double tolerance)
+                        const std::vector<Panel>& quads, Orientation_policy policy, double tolerance)
 {
   fc.orientation =
     flexible_cluster_shapes(pm, fim, quads, fc.label, fc.number_of_clusters, policy, tolerance).orientation;

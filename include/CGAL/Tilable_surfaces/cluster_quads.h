@@ -84,7 +84,7 @@ struct Clustering_result
   /// The S-quad of each cluster: the mean shape of its instances, each brought
   /// by its best match onto the current mean (3 Procrustes iterations),
   /// centred at the origin. Face orientations refer to its corner labels.
-  std::vector<Quad> s_quads;
+  std::vector<Panel> s_quads;
   /// The weight S(C) of each cluster: on the exact path the sum of the pairwise
   /// dissimilarities of its quads; on the descriptor path the estimate
   /// (|C| - 1) * sum_{q in C} s(S-quad, q), the triangle-inequality bound that
@@ -117,11 +117,11 @@ namespace internal {
 
 // The corners of every face, indexed by `fim`.
 template <typename PolygonMesh, typename FaceIndexMap, typename NP>
-std::vector<Quad> face_quads(const PolygonMesh& pm, FaceIndexMap fim, const NP& np)
+std::vector<Panel> face_quads(const PolygonMesh& pm, FaceIndexMap fim, const NP& np)
 {
-  std::vector<Quad> quads(num_faces(pm));
+  std::vector<Panel> quads(num_faces(pm));
   for(auto f : faces(pm))
-    quads[get(fim, f)] = face_quad(f, pm, Quad_orientation(), np);
+    quads[get(fim, f)] = face_panel(f, pm, Quad_orientation(), np);
   return quads;
 }
 
@@ -129,7 +129,7 @@ std::vector<Quad> face_quads(const PolygonMesh& pm, FaceIndexMap fim, const NP& 
 // each face tagged with an admissible orientation chosen for flexibility
 // (flexible_orientations(), near-ties within `tau`).
 template <typename PolygonMesh, typename FaceIndexMap>
-Cluster_shapes flexible_cluster_shapes(const PolygonMesh& pm, FaceIndexMap fim, const std::vector<Quad>& quads,
+Cluster_shapes flexible_cluster_shapes(const PolygonMesh& pm, FaceIndexMap fim, const std::vector<Panel>& quads,
                                        const std::vector<std::size_t>& label, std::size_t k,
                                        Orientation_policy policy, double tau)
 {
@@ -142,7 +142,7 @@ Cluster_shapes flexible_cluster_shapes(const PolygonMesh& pm, FaceIndexMap fim, 
 // The same, with the resulting DOF.
 template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
 Cluster_shapes finished_clustering(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
-                                   const std::vector<Quad>& quads, const std::vector<std::size_t>& label,
+                                   const std::vector<Panel>& quads, const std::vector<std::size_t>& label,
                                    std::size_t k, Orientation_policy policy, double tau)
 {
   Cluster_shapes shapes = flexible_cluster_shapes(pm, fim, quads, label, k, policy, tau);
@@ -240,7 +240,11 @@ public:
                  double mean_edge_length, std::size_t k, const Clustering_settings& settings)
     : m_pm(pm), m_faces(std::move(faces)), m_fim(m_faces.index_map()), m_vpm(vpm), m_quads(m_faces.quads)
     , m_n(m_quads.size()), m_k(k), m_length(mean_edge_length), m_settings(settings), m_random(settings.seed)
+    , m_triangles(has_triangles(m_quads))
   {
+    if(m_k < number_of_panel_kinds(m_quads))
+      throw Invalid_input("number_of_tiles is 1, but the mesh has quads and triangles, which never share a "
+                          "tile: at least 2 tiles are needed", Invalid_input::PARAMETER);
     m_descriptors.resize(m_n);
     for(std::size_t f = 0; f < m_n; ++f) m_descriptors[f] = shape_descriptor(m_quads[f]);
   }
@@ -293,7 +297,8 @@ public:
       for(const std::vector<std::size_t>& label :
           strip_clusterings(m_pm, m_fim, m_vpm, m_quads, m_descriptors, m_k, m_settings.policy, m_random))
         add_best_match_candidate(result, label, Clustering_candidate::QUAD_STRIPS);
-    if(m_settings.use_segments && m_k > 1)
+    // A quad grid has no triangle.
+    if(m_settings.use_segments && m_k > 1 && !m_triangles)
       for(const std::vector<std::size_t>& label :
           segment_clusterings(m_pm, m_fim, m_vpm, m_k, m_settings.policy))
         add_best_match_candidate(result, label, Clustering_candidate::GRID_SEGMENTS);
@@ -346,7 +351,10 @@ private:
   {
     m_initial_graph.reset(new Edge_sharing_graph<PolygonMesh>(
       edge_sharing_graph(m_pm, m_fim, m_vpm, m_init.cluster, m_init.orientation, m_init.leaders.size())));
-    m_score.single_cluster_weight = labelling_weight(std::vector<std::size_t>(m_n, 0), 1);
+    // One cluster per kind: a quad and a triangle are never compared.
+    std::vector<std::size_t> by_kind(m_n, 0);
+    const std::size_t kinds = m_triangles ? separate_kinds(m_quads, by_kind) : 1;
+    m_score.single_cluster_weight = labelling_weight(by_kind, kinds);
     m_score.flexibility_penalty = m_settings.lambda;
     m_score.initial_dof = m_initial_graph->degree_of_flexibility();
     m_score.structure_penalty = m_settings.mu;
@@ -374,7 +382,7 @@ private:
     const std::size_t big_n = m_init.leaders.size();
     std::vector<std::size_t> faces_per_cluster(big_n, 0);
     for(std::size_t c : m_init.cluster) ++faces_per_cluster[c];
-    std::vector<Quad> leaders(big_n);
+    std::vector<Panel> leaders(big_n);
     for(std::size_t c = 0; c < big_n; ++c) leaders[c] = m_quads[m_init.leaders[c]];
     auto collect = [&](const auto& beam_search) {
       for(const auto& s :
@@ -408,6 +416,9 @@ private:
     if(label.empty())
       return;
     relabel_by_first_face(label);
+    if(m_triangles)
+      bring_to(m_k, m_pm, m_fim, m_vpm, m_quads, m_descriptors, m_settings.policy, m_random, label,
+               separate_kinds(m_quads, label));
     const Descriptor_merge_costs stats(m_descriptors, label, m_k);
     std::vector<std::size_t> representative(m_k, no_index());
     std::vector<double> best(m_k, 0.0);
@@ -492,12 +503,13 @@ private:
   const Canonical_faces<OriginalFaceIndexMap> m_faces;
   FaceIndexMap m_fim;
   VertexPointMap m_vpm;
-  const std::vector<Quad>& m_quads;  // m_faces.quads
+  const std::vector<Panel>& m_quads;  // m_faces.quads
   std::vector<Quad_descriptor> m_descriptors;
   const std::size_t m_n, m_k;
   const double m_length;
   const Clustering_settings m_settings;
   CGAL::Random m_random;
+  const bool m_triangles;  // the mesh has triangles as well as quads (or only triangles)
   bool m_exact = true;
   std::vector<double> m_affinity;  // n x n dissimilarities, exact path only
   Initial_clustering m_init;
@@ -524,7 +536,7 @@ std::size_t tile_count(const NamedParameters& np, std::size_t n)
 // are `quads` (K_set_tilable_surface keeps them).
 template <class PolygonMesh, typename NamedParameters>
 Clustering_result cluster_quads(Validated_mesh, const PolygonMesh& pm, const NamedParameters& np,
-                                const std::vector<Quad>& quads)
+                                const std::vector<Panel>& quads)
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
@@ -652,8 +664,9 @@ Clustering_result cluster_quads(Validated_mesh, const PolygonMesh& pm, const Nam
 ///     stages. \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///
-/// \throws Invalid_input if K < 1, K > num_faces(pm), or `pm` fails
-/// `validate_quad_mesh()`; the maps are not modified then.
+/// \throws Invalid_input if K < 1, K > num_faces(pm), `pm` fails
+/// `validate_quad_mesh()`, or K = 1 on a mesh with quads and triangles; the
+/// maps are not modified then.
 template <class PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 Clustering_result cluster_quads(const PolygonMesh& pm, const CGAL_NP_CLASS& np)
 {

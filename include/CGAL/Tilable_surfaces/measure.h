@@ -56,7 +56,7 @@ struct Tilability_measure
   /// instances (each in the template's labelling) under proper rigid motions,
   /// in mesh units and in a canonical frame: t0 at the origin, t1 on the +x
   /// axis, t2 in the xy plane with y >= 0. Zeros for a cluster without faces.
-  std::vector<Quad> s_quads;
+  std::vector<Panel> s_quads;
   /// The largest distance between the two diagonals of a face of the result,
   /// divided by `mean_edge_length`: 0 when every panel is planar.
   double planarity_error = 0;
@@ -127,7 +127,7 @@ struct Tile
   std::size_t mirrored_count = 0;
   /// Corners t0..t3 in a canonical frame (t0 at the origin, t1 on +x, t2 in
   /// the xy plane with y >= 0), in the mesh's units.
-  Quad corners;
+  Panel corners;
   /// The largest corner deviation of an instance from the S-quad after its
   /// best rigid fit (proper, or improper for a mirrored instance), in the
   /// mesh's units.

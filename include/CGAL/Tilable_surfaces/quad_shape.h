@@ -43,19 +43,90 @@ Eigen::Vector3d to_eigen(const Point_3& p)
 {
   return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
 }
+
+// At most N values kept in place (the edges of a face, the correspondences
+// of a panel), with what range-for loops and indexing need.
+template <typename T, std::size_t N>
+class Bounded_list
+{
+public:
+  void push_back(const T& x) { m_values[m_size++] = x; }
+  std::size_t size() const { return m_size; }
+  const T& operator[](std::size_t i) const { return m_values[i]; }
+  const T* begin() const { return m_values.data(); }
+  const T* end() const { return m_values.data() + m_size; }
+
+private:
+  std::array<T, N> m_values{};
+  std::size_t m_size = 0;
+};
 } // namespace internal
 
 /// \ingroup PkgTilableSurfacesRef
-/// Four corners t0, t1, t2, t3 of a quad, in double precision. Edge `k` joins
-/// corners `k` and `(k+1) mod 4`; the diagonals are t0t2 and t1t3.
-typedef std::array<Eigen::Vector3d, 4> Quad;
+/// The corners t0, t1, ... of a panel in double precision: four for a quad,
+/// three for a triangle. Edge `k` joins corners `k` and `(k+1) mod size()`;
+/// the diagonals of a quad are t0t2 and t1t3.
+class Panel
+{
+public:
+  /// A quad whose corners are left uninitialized.
+  Panel() : m_size(4) {}
+
+  /// The quad with corners `q[0..3]`.
+  Panel(const std::array<Eigen::Vector3d, 4>& q) : m_corners(q), m_size(4) {}
+
+  /// The triangle with corners `a`, `b`, `c`.
+  Panel(const Eigen::Vector3d& a, const Eigen::Vector3d& b, const Eigen::Vector3d& c)
+    : m_corners{{a, b, c, Eigen::Vector3d::Zero()}}, m_size(3)
+  {}
+
+  /// A panel of `corners` (3 or 4) corners at the origin.
+  static Panel zero(int corners)
+  {
+    const Eigen::Vector3d o = Eigen::Vector3d::Zero();
+    return corners == 3 ? Panel(o, o, o) : Panel{{o, o, o, o}};
+  }
+
+  /// The number of corners, 3 or 4.
+  int size() const { return m_size; }
+  /// Whether the panel is a triangle.
+  bool is_triangle() const { return m_size == 3; }
+
+  /// Corner `i`, in 0..size()-1.
+  Eigen::Vector3d& operator[](int i) { return m_corners[std::size_t(i)]; }
+  /// Corner `i`, in 0..size()-1.
+  const Eigen::Vector3d& operator[](int i) const { return m_corners[std::size_t(i)]; }
+
+  /// The corners, for range-for loops.
+  Eigen::Vector3d* begin() { return m_corners.data(); }
+  /// Past the last corner.
+  Eigen::Vector3d* end() { return m_corners.data() + m_size; }
+  /// The corners, for range-for loops.
+  const Eigen::Vector3d* begin() const { return m_corners.data(); }
+  /// Past the last corner.
+  const Eigen::Vector3d* end() const { return m_corners.data() + m_size; }
+
+  /// The centroid of the corners.
+  Eigen::Vector3d centroid() const
+  {
+    Eigen::Vector3d c = Eigen::Vector3d::Zero();
+    for(const Eigen::Vector3d& p : *this) c += p;
+    return c / double(m_size);
+  }
+
+private:
+  std::array<Eigen::Vector3d, 4> m_corners;
+  int m_size;
+};
 
 /// \ingroup PkgTilableSurfacesRef
-/// One of the 8 correspondences between the corners of an S-quad and the
-/// vertices (v0, v1, v2, v3) of a face, in the face's order: template corner
-/// `i` goes to face vertex `(*this)(i)`, with
-/// `(i + o) mod 4` for `o < 4` (same direction) and `(o - i) mod 4` for
-/// `o >= 4` (reversed: the panel is turned over).
+/// One of the correspondences between the corners of an S-quad (or
+/// S-triangle) and the vertices (v0, v1, ...) of a face of `n` corners, in
+/// the face's order: template corner `i` goes to face vertex `(*this)(i, n)`,
+/// with `(i + o) mod n` for `o < 4` (same direction) and `(o - 4 - i) mod n`
+/// for `o >= 4` (reversed: the panel is turned over). A quad has the 8
+/// correspondences 0..7, a triangle the 6 correspondences 0, 1, 2, 4, 5, 6
+/// (`is_valid_for()`). Every member takes the number of corners `n`, 4 by default.
 class Quad_orientation
 {
 public:
@@ -80,38 +151,33 @@ public:
   /// Whether the correspondence reverses the cyclic order (o >= 4).
   bool is_reversed() const { return m_index >= 4; }
 
-  /// The face vertex (0..3) that template corner `i` (0..3) goes to.
-  int operator()(int i) const
+  /// Whether this is one of the correspondences of a face of `n` corners.
+  bool is_valid_for(int n) const { return (m_index & 3) < n; }
+
+  /// The face vertex (0..n-1) that template corner `i` (0..n-1) goes to.
+  int operator()(int i, int n = 4) const
   {
-    return m_index < 4 ? (i + m_index) & 3 : (m_index - i) & 3;
+    return m_index < 4 ? modulo(i + m_index, n) : modulo(m_index - 4 - i, n);
   }
 
-  /// The correspondence that undoes this one: `inverse()((*this)(i)) == i`.
-  Quad_orientation inverse() const
+  /// The correspondence that undoes this one: `inverse(n)((*this)(i, n), n) == i`.
+  Quad_orientation inverse(int n = 4) const
   {
-    return m_index < 4 ? Quad_orientation((4 - m_index) & 3) : *this;
+    return m_index < 4 ? Quad_orientation(modulo(n - m_index, n)) : *this;
   }
 
-  /// The composition `(a * b)(i) == a(b(i))`.
-  friend Quad_orientation operator*(const Quad_orientation& a, const Quad_orientation& b)
-  {
-    // Both maps are determined by the image of 0 and the direction.
-    const int image_of_zero = a(b(0));
-    const bool reversed = a.is_reversed() != b.is_reversed();
-    return Quad_orientation(reversed ? 4 + image_of_zero : image_of_zero);
-  }
 
-  /// The face edge (0..3, edge j joins v_j and v_{j+1}) that template edge
+  /// The face edge (0..n-1, edge j joins v_j and v_{j+1}) that template edge
   /// `k` (joining t_k and t_{k+1}) goes to.
-  int face_edge(int k) const
+  int face_edge(int k, int n = 4) const
   {
-    return m_index < 4 ? (k + m_index) & 3 : (m_index - k - 1) & 3;
+    return m_index < 4 ? modulo(k + m_index, n) : modulo(m_index - 4 - k - 1, n);
   }
 
   /// The template edge that goes to face edge `j`; inverse of `face_edge()`.
-  int template_edge(int j) const
+  int template_edge(int j, int n = 4) const
   {
-    return m_index < 4 ? (j - m_index) & 3 : (m_index - j - 1) & 3;
+    return m_index < 4 ? modulo(j - m_index, n) : modulo(m_index - 4 - j - 1, n);
   }
 
   /// Equality of correspondences.
@@ -122,48 +188,83 @@ public:
   { return a.m_index != b.m_index; }
 
 private:
+  // `a & 3` is the quads' hot path; works for negative `a` too.
+  static int modulo(int a, int n) { return n == 4 ? (a & 3) : ((a % n) + n) % n; }
+
   unsigned char m_index;
 };
 
 
 /// \ingroup PkgTilableSurfacesRef
-/// Returns the quad `r` with `r[i] = q[o(i)]`: the corners of `q` listed in the
-/// labelling of a template matched to `q` with orientation `o`.
-inline Quad reoriented(const Quad& q, Quad_orientation o)
+/// The composition of two correspondences between panels of `n` corners:
+/// `compose(a, b, n)(i, n) == a(b(i, n), n)`.
+inline Quad_orientation compose(const Quad_orientation& a, const Quad_orientation& b, int n = 4)
 {
-  return Quad{{q[o(0)], q[o(1)], q[o(2)], q[o(3)]}};
+  // Both maps are determined by the image of 0 and the direction.
+  const int image_of_zero = a(b(0, n), n);
+  const bool reversed = a.is_reversed() != b.is_reversed();
+  return Quad_orientation(reversed ? 4 + image_of_zero : image_of_zero);
 }
 
 /// \ingroup PkgTilableSurfacesRef
-/// Lengths of the edges t0t1, t1t2, t2t3, t3t0.
-inline std::array<double, 4> edge_lengths(const Quad& q)
+/// The composition of two quad correspondences, `compose(a, b, 4)`.
+inline Quad_orientation operator*(const Quad_orientation& a, const Quad_orientation& b)
 {
-  return {{(q[1] - q[0]).norm(), (q[2] - q[1]).norm(),
-           (q[3] - q[2]).norm(), (q[0] - q[3]).norm()}};
+  return compose(a, b, 4);
 }
 
 /// \ingroup PkgTilableSurfacesRef
-/// Lengths of the diagonals t0t2 and t1t3.
-inline std::array<double, 2> diagonal_lengths(const Quad& q)
+/// Returns the panel `r` with `r[i] = q[o(i)]`: the corners of `q` listed in
+/// the labelling of a template matched to `q` with orientation `o`.
+inline Panel reoriented(const Panel& q, Quad_orientation o)
 {
+  if(q.is_triangle())
+    return Panel(q[o(0, 3)], q[o(1, 3)], q[o(2, 3)]);
+  return Panel{{q[o(0)], q[o(1)], q[o(2)], q[o(3)]}};
+}
+
+/// \ingroup PkgTilableSurfacesRef
+/// Lengths of the edges t0t1, t1t2, t2t3, t3t0 of a quad; of a triangle, of
+/// t0t1, t1t2, t2t0, then 0.
+inline std::array<double, 4> edge_lengths(const Panel& q)
+{
+  const int n = q.size();
+  std::array<double, 4> r{{0, 0, 0, 0}};
+  for(int k = 0; k < n; ++k)
+    r[std::size_t(k)] = (q[(k + 1) % n] - q[k]).norm();
+  return r;
+}
+
+/// \ingroup PkgTilableSurfacesRef
+/// Lengths of the diagonals t0t2 and t1t3 of a quad; 0 and 0 for a triangle.
+inline std::array<double, 2> diagonal_lengths(const Panel& q)
+{
+  if(q.is_triangle())
+    return {{0, 0}};
   return {{(q[2] - q[0]).norm(), (q[3] - q[1]).norm()}};
 }
 
 /// \ingroup PkgTilableSurfacesRef
 /// Signed volume det[t1 - t0, t2 - t0, t3 - t0] / 6 of the tetrahedron of the
-/// four corners. It changes sign under a mirror, under reversal of the labels
-/// and under an odd cyclic shift; evaluate it in the template's labelling.
-inline double signed_volume(const Quad& q)
+/// four corners of a quad (0 for a triangle). It changes sign under a mirror,
+/// under reversal of the labels and under an odd cyclic shift; evaluate it in
+/// the template's labelling.
+inline double signed_volume(const Panel& q)
 {
+  if(q.is_triangle())
+    return 0;
   return (q[1] - q[0]).dot((q[2] - q[0]).cross(q[3] - q[0])) / 6.0;
 }
 
 /// \ingroup PkgTilableSurfacesRef
-/// Distance of t3 to the plane through t0, t1, t2: 0 for a planar quad. When
-/// t0, t1, t2 are (nearly) collinear, the largest of the four corner
-/// triangles is taken as the base instead, so the value stays meaningful.
-inline double planarity_defect(const Quad& q)
+/// Distance of t3 to the plane through t0, t1, t2: 0 for a planar quad and
+/// for a triangle. When t0, t1, t2 are (nearly) collinear, the largest of the
+/// four corner triangles is taken as the base instead, so the value stays
+/// meaningful.
+inline double planarity_defect(const Panel& q)
 {
+  if(q.is_triangle())
+    return 0;
   // 6|V| = (twice the base area) * height.
   const double six_volume = 6.0 * std::abs(signed_volume(q));
   const double base = (q[1] - q[0]).cross(q[2] - q[0]).norm();
@@ -180,11 +281,13 @@ inline double planarity_defect(const Quad& q)
 }
 
 /// \ingroup PkgTilableSurfacesRef
-/// Distance between the lines of the diagonals t0t2 and t1t3: 0 exactly when
-/// the quad is planar (or its diagonals are parallel). The planarity measure
-/// of `planar_tiles`.
-inline double diagonal_distance(const Quad& q)
+/// Distance between the lines of the diagonals t0t2 and t1t3 of a quad: 0
+/// exactly when the quad is planar (or its diagonals are parallel); 0 for a
+/// triangle. The planarity measure of `planar_tiles`.
+inline double diagonal_distance(const Panel& q)
 {
+  if(q.is_triangle())
+    return 0;
   const Eigen::Vector3d n = (q[2] - q[0]).cross(q[3] - q[1]);
   const double length = n.norm();
   return length > 0 ? std::abs((q[1] - q[0]).dot(n)) / length : 0.0;
@@ -193,13 +296,14 @@ inline double diagonal_distance(const Quad& q)
 /// \ingroup PkgTilableSurfacesRef
 /// A rotation-invariant and relabelling-invariant shape descriptor, all in
 /// length units: the 4 edge lengths sorted, the 2 diagonal lengths sorted and
-/// the cube root of 6|V|. Congruent quads have equal descriptors (mirror
-/// images too: the descriptor prefilters, the dissimilarity decides).
+/// the cube root of 6|V|. Congruent panels have equal descriptors (mirror
+/// images too: the descriptor prefilters, the dissimilarity decides). A
+/// triangle's lists a zero edge, zero diagonals and a zero volume.
 typedef std::array<double, 7> Quad_descriptor;
 
 /// \ingroup PkgTilableSurfacesRef
 /// Computes the descriptor of `q`; see `Quad_descriptor`.
-inline Quad_descriptor shape_descriptor(const Quad& q)
+inline Quad_descriptor shape_descriptor(const Panel& q)
 {
   const std::array<double, 4> e = edge_lengths(q);
   const std::array<double, 2> d = diagonal_lengths(q);
@@ -222,18 +326,24 @@ struct Rigid_fit
   /// The image of `p`.
   Eigen::Vector3d operator()(const Eigen::Vector3d& p) const { return rotation * p + translation; }
   /// The image of every corner of `q`.
-  Quad operator()(const Quad& q) const
-  { return Quad{{(*this)(q[0]), (*this)(q[1]), (*this)(q[2]), (*this)(q[3])}}; }
+  Panel operator()(Panel q) const
+  {
+    for(Eigen::Vector3d& p : q) p = (*this)(p);
+    return q;
+  }
 };
 
-/// \ingroup PkgTilableSurfacesRef
-/// The proper rigid motion T minimising sum_i |target[i] - T(source[i])|^2
-/// (Umeyama's closed form, never a mirror). With `allow_mirror`, the better of
-/// that motion and the best improper one.
-inline Rigid_fit best_rigid_fit(const Quad& source, const Quad& target, bool allow_mirror = false)
+namespace internal {
+
+// best_rigid_fit() for panels of N corners: fixed sizes, so that Eigen
+// rounds a quad's fit as it always did.
+template <int N>
+Rigid_fit best_rigid_fit(const Panel& source, const Panel& target, bool allow_mirror)
 {
-  Eigen::Matrix<double, 3, 4> src, dst;
-  for(int i = 0; i < 4; ++i) { src.col(i) = source[i]; dst.col(i) = target[i]; }
+  typedef Eigen::Matrix<double, 3, N> Corners;
+  const int n = N;
+  Corners src, dst;
+  for(int i = 0; i < n; ++i) { src.col(i) = source[i]; dst.col(i) = target[i]; }
   const Eigen::Matrix4d proper = Eigen::umeyama(src, dst, false);
   Rigid_fit fit;
   fit.rotation = proper.topLeftCorner<3, 3>();
@@ -242,7 +352,7 @@ inline Rigid_fit best_rigid_fit(const Quad& source, const Quad& target, bool all
     return fit;
 
   // An improper motion is a proper one applied after the mirror z -> -z.
-  Eigen::Matrix<double, 3, 4> mirrored = src;
+  Corners mirrored = src;
   mirrored.row(2) *= -1;
   const Eigen::Matrix4d improper = Eigen::umeyama(mirrored, dst, false);
   Rigid_fit mirror_fit;
@@ -252,54 +362,81 @@ inline Rigid_fit best_rigid_fit(const Quad& source, const Quad& target, bool all
 
   auto squared_residual = [&](const Rigid_fit& f) {
     double r = 0;
-    for(int i = 0; i < 4; ++i) r += (target[i] - f(source[i])).squaredNorm();
+    for(int i = 0; i < n; ++i) r += (target[i] - f(source[i])).squaredNorm();
     return r;
   };
   return squared_residual(mirror_fit) < squared_residual(fit) ? mirror_fit : fit;
 }
 
+} // namespace internal
+
+/// \ingroup PkgTilableSurfacesRef
+/// The proper rigid motion T minimising sum_i |target[i] - T(source[i])|^2
+/// (Umeyama's closed form, never a mirror). With `allow_mirror`, the better of
+/// that motion and the best improper one. `source` and `target` have the same
+/// number of corners.
+inline Rigid_fit best_rigid_fit(const Panel& source, const Panel& target, bool allow_mirror = false)
+{
+  return source.is_triangle() ? internal::best_rigid_fit<3>(source, target, allow_mirror)
+                              : internal::best_rigid_fit<4>(source, target, allow_mirror);
+}
+
 /// \ingroup PkgTilableSurfacesRef
 /// max_i |target[i] - T(source[i])| for the best rigid fit T of `source`
 /// onto `target` (labels already in correspondence).
-inline double rigid_fit_deviation(const Quad& source, const Quad& target, bool allow_mirror = false)
+inline double rigid_fit_deviation(const Panel& source, const Panel& target, bool allow_mirror = false)
 {
   const Rigid_fit fit = best_rigid_fit(source, target, allow_mirror);
   double worst = 0;
-  for(int i = 0; i < 4; ++i)
+  for(int i = 0; i < source.size(); ++i)
     worst = (std::max)(worst, (target[i] - fit(source[i])).norm());
   return worst;
 }
 
 /// \ingroup PkgTilableSurfacesRef
-/// The outcome of matching a template quad to a face: the dissimilarity
+/// Whether correspondence `o` may match panels of `n` corners under `policy`:
+/// one of their correspondences (`Quad_orientation::is_valid_for()`), and not
+/// reversed under `NO_TURNED_OVER_PANELS`.
+inline bool is_admissible(Quad_orientation o, int n, Orientation_policy policy)
+{
+  return o.is_valid_for(n) && !(policy == NO_TURNED_OVER_PANELS && o.is_reversed());
+}
+
+/// \ingroup PkgTilableSurfacesRef
+/// The outcome of matching a template panel to a face: the dissimilarity
 /// s(p, q) of the paper, the correspondence that achieves it and the motion.
+/// Panels of different kinds (a quad and a triangle) never match: their
+/// dissimilarity is infinite.
 struct Quad_match
 {
-  double dissimilarity = (std::numeric_limits<double>::max)();  ///< s(p, q)
+  double dissimilarity = std::numeric_limits<double>::infinity();  ///< s(p, q)
   Quad_orientation orientation;  ///< the correspondence that achieves it
   Rigid_fit fit;                 ///< the motion of p onto q relabelled by `orientation`
 };
 
 /// \ingroup PkgTilableSurfacesRef
-/// Matches template `p` (corners t_i) to quad `q` (vertices v_j in the face's
-/// order): the minimum over the correspondences allowed by `policy` of
-/// sum_i |v_{o(i)} - T(t_i)|, T the best rigid fit of `p` onto `q` relabelled
-/// by `o`. Symmetric in value: `best_match(q, p)` has the same dissimilarity,
-/// with the inverse orientation. Ties are broken by the smallest orientation
-/// index, so the result is deterministic.
-inline Quad_match best_match(const Quad& p, const Quad& q,
+/// Matches template `p` (corners t_i) to panel `q` (vertices v_j in the
+/// face's order): the minimum over the correspondences allowed by `policy`
+/// (`is_admissible()`) of sum_i |v_{o(i)} - T(t_i)|, T the best rigid fit of
+/// `p` onto `q` relabelled by `o`. Symmetric in value: `best_match(q, p)` has
+/// the same dissimilarity, with the inverse orientation. Ties are broken by
+/// the smallest orientation index, so the result is deterministic.
+inline Quad_match best_match(const Panel& p, const Panel& q,
                              Orientation_policy policy = PROPER_RIGID_MOTIONS)
 {
   const bool allow_mirror = (policy == ALLOW_MIRRORED_PANELS);
-  const int number_of_orientations = (policy == NO_TURNED_OVER_PANELS) ? 4 : 8;
   Quad_match best;
-  for(int o = 0; o < number_of_orientations; ++o)
+  if(p.size() != q.size())
+    return best;
+  for(int o = 0; o < 8; ++o)
   {
     const Quad_orientation orientation(o);
-    const Quad target = reoriented(q, orientation);
+    if(!is_admissible(orientation, q.size(), policy))
+      continue;
+    const Panel target = reoriented(q, orientation);
     const Rigid_fit fit = best_rigid_fit(p, target, allow_mirror);
     double sum = 0;
-    for(int i = 0; i < 4; ++i)
+    for(int i = 0; i < q.size(); ++i)
       sum += (target[i] - fit(p[i])).norm();
     if(sum < best.dissimilarity)
     {
@@ -313,7 +450,7 @@ inline Quad_match best_match(const Quad& p, const Quad& q,
 
 /// \ingroup PkgTilableSurfacesRef
 /// The dissimilarity s(p, q) of the paper (§3); see `best_match()`.
-inline double dissimilarity(const Quad& p, const Quad& q,
+inline double dissimilarity(const Panel& p, const Panel& q,
                             Orientation_policy policy = PROPER_RIGID_MOTIONS)
 {
   return best_match(p, q, policy).dissimilarity;
@@ -327,29 +464,35 @@ inline double dissimilarity(const Quad& p, const Quad& q,
 /// Each instance must already be in the template's labelling (see
 /// `reoriented()`). Returns 0 for an empty range.
 template <typename QuadRange>
-double congruence_error(const QuadRange& instances, const Quad& s_quad,
+double congruence_error(const QuadRange& instances, const Panel& s_quad,
                         double length_scale = 1.0, bool allow_mirror = false)
 {
   double worst = 0;
-  for(const Quad& instance : instances)
+  for(const Panel& instance : instances)
     worst = (std::max)(worst, rigid_fit_deviation(s_quad, instance, allow_mirror));
   return worst / length_scale;
 }
 
 /// \ingroup PkgTilableSurfacesRef
-/// The halfedges of the four edges of quad `f`: entry `j` is face edge j, from
-/// the face's vertex v_j to v_{j+1} (the vertices as `face_quad()` lists them),
-/// that is next^(j+1)(halfedge(f, pm)), since `vertices_around_face()` starts at
-/// the target of `halfedge(f, pm)`. `Quad_orientation::face_edge()` and the
-/// edge-sharing graph number a face's edges this way.
+/// The halfedges of the edges of face `f` (a quad or a triangle): entry `j`
+/// is face edge j, from the face's vertex v_j to v_{j+1} (the vertices as
+/// `face_panel()` lists them), that is next^(j+1)(halfedge(f, pm)), since
+/// `vertices_around_face()` starts at the target of `halfedge(f, pm)`.
+/// `Quad_orientation::face_edge()` and the edge-sharing graph number a face's
+/// edges this way. Faces of more than 4 edges give their first 4. The result
+/// has `size()`, `operator[]` and `begin()` / `end()`.
 template <typename PolygonMesh>
-std::array<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor, 4>
+internal::Bounded_list<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor, 4>
 face_edge_halfedges(typename boost::graph_traits<PolygonMesh>::face_descriptor f, const PolygonMesh& pm)
 {
-  std::array<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor, 4> h;
-  h[0] = next(halfedge(f, pm), pm);
-  for(int j = 1; j < 4; ++j)
-    h[j] = next(h[j - 1], pm);
+  internal::Bounded_list<typename boost::graph_traits<PolygonMesh>::halfedge_descriptor, 4> h;
+  const auto first = halfedge(f, pm);
+  auto current = first;
+  do
+  {
+    current = next(current, pm);
+    h.push_back(current);
+  } while(current != first && h.size() < 4);
   return h;
 }
 
@@ -366,9 +509,9 @@ auto const_vertex_point_map(const PolygonMesh& pm, const NamedParameters& np)
 } // namespace internal
 
 /// \ingroup PkgTilableSurfacesRef
-/// The corners of face `f` of `pm` in the labelling of a template matched
-/// with orientation `o`: corner `i` is the face's vertex `o(i)`, the face's
-/// vertices (v0, v1, v2, v3) being listed as
+/// The corners of face `f` of `pm` (a quad or a triangle) in the labelling of
+/// a template matched with orientation `o`: corner `i` is the face's vertex
+/// `o(i, n)`, the face's n vertices (v0, v1, ...) being listed as
 /// `vertices_around_face(halfedge(f, pm), pm)` does (for a `Surface_mesh`, the
 /// order in which they were given to `add_face()` or in the file).
 ///
@@ -376,25 +519,30 @@ auto const_vertex_point_map(const PolygonMesh& pm, const NamedParameters& np)
 ///   \cgalParamNBegin{vertex_point_map} the property map with the points
 ///     associated to the vertices of `pm` \cgalParamNEnd
 /// \cgalNamedParamsEnd
-/// \throws Invalid_input if `f` is not a quad.
+/// \throws Invalid_input if `f` is neither a quad nor a triangle, or if `o`
+/// is not one of its correspondences.
 template <typename PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
-Quad face_quad(typename boost::graph_traits<PolygonMesh>::face_descriptor f,
-               const PolygonMesh& pm,
-               Quad_orientation o = Quad_orientation(),
-               const CGAL_NP_CLASS& np = parameters::default_values())
+Panel face_panel(typename boost::graph_traits<PolygonMesh>::face_descriptor f,
+                 const PolygonMesh& pm,
+                 Quad_orientation o = Quad_orientation(),
+                 const CGAL_NP_CLASS& np = parameters::default_values())
 {
   const auto vpm = internal::const_vertex_point_map(pm, np);
-  Quad face_order;
+  std::array<Eigen::Vector3d, 4> face_order;
   int n = 0;
   for(auto v : CGAL::vertices_around_face(halfedge(f, pm), pm))
   {
     if(n == 4) { n = 5; break; }
-    face_order[n++] = internal::to_eigen(get(vpm, v));
+    face_order[std::size_t(n++)] = internal::to_eigen(get(vpm, v));
   }
-  if(n != 4)
-    throw Invalid_input("a face that is not a quad was given where a quad is needed",
+  if(n != 3 && n != 4)
+    throw Invalid_input("a face that is neither a quad nor a triangle was given where a panel is needed",
                         Invalid_input::FACE);
-  return reoriented(face_order, o);
+  if(!o.is_valid_for(n))
+    throw Invalid_input("orientation " + std::to_string(o.index()) + " is not one of a triangle's",
+                        Invalid_input::PARAMETER);
+  const Panel panel = n == 3 ? Panel(face_order[0], face_order[1], face_order[2]) : Panel(face_order);
+  return reoriented(panel, o);
 }
 
 /// \ingroup PkgTilableSurfacesRef

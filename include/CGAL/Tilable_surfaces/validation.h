@@ -156,9 +156,29 @@ bool is_isolated(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
   return halfedge(v, pm) == boost::graph_traits<PolygonMesh>::null_halfedge();
 }
 
-// Checks the cluster `c` and orientation `o` of face `fi` against K clusters
-// (K unknown: the largest size_t) and the 8 orientations.
-inline void check_face_label(std::size_t fi, long long c, long long o, std::size_t number_of_clusters)
+// The number of corners of face `f` of a mesh validate_quad_mesh() accepted: 3 or 4.
+template <typename PolygonMesh>
+int face_corner_count(typename boost::graph_traits<PolygonMesh>::face_descriptor f, const PolygonMesh& pm)
+{
+  return int(face_edge_halfedges(f, pm).size());
+}
+
+// The number of kinds of faces of a mesh validate_quad_mesh() accepted: 1,
+// or 2 with quads and triangles (the smallest possible K).
+template <typename PolygonMesh>
+std::size_t number_of_face_kinds(const PolygonMesh& pm)
+{
+  bool kind[5] = {false, false, false, false, false};
+  for(auto f : faces(pm))
+    kind[face_corner_count(f, pm)] = true;
+  return std::size_t(kind[3]) + std::size_t(kind[4]);
+}
+
+// Checks the cluster `c` and orientation `o` of face `fi`, of `corners`
+// corners, against K clusters (K unknown: the largest size_t) and the
+// orientations of its kind.
+inline void check_face_label(std::size_t fi, long long c, long long o, std::size_t number_of_clusters,
+                             int corners)
 {
   if(c < 0 || std::size_t(c) >= number_of_clusters)
     throw Invalid_input("face " + std::to_string(fi) + " has cluster " + std::to_string(c) +
@@ -169,6 +189,10 @@ inline void check_face_label(std::size_t fi, long long c, long long o, std::size
   if(o < 0 || o > 7)
     throw Invalid_input("face " + std::to_string(fi) + " has orientation " + std::to_string(o) +
                         ", not in 0..7", Invalid_input::FACE, fi);
+  if(!Quad_orientation(int(o)).is_valid_for(corners))
+    throw Invalid_input("face " + std::to_string(fi) + " is a triangle and has orientation " +
+                        std::to_string(o) + ", not one of a triangle's (0, 1, 2, 4, 5, 6)",
+                        Invalid_input::FACE, fi);
 }
 
 // The same for every face, the clusters and orientations read from maps.
@@ -179,7 +203,7 @@ void check_face_labels(const PolygonMesh& pm, FaceIndexMap fim, ClusterMap clust
   for(auto f : faces(pm))
     check_face_label(std::size_t(get(fim, f)), static_cast<long long>(get(clusters, f)),
                      static_cast<long long>(static_cast<int>(get(orientations, f))),
-                     (std::numeric_limits<std::size_t>::max)());
+                     (std::numeric_limits<std::size_t>::max)(), face_corner_count(f, pm));
 }
 
 } // namespace internal
@@ -210,10 +234,12 @@ std::size_t number_of_isolated_vertices(const PolygonMesh& pm)
 /// squares of larger ones overflow); the bounding-box diagonal must exceed
 /// 1e-140 (smaller squares underflow) and 1e-7 times the largest coordinate
 /// (doubles would resolve the shape more coarsely than the congruence
-/// tolerance); every face must be a quad with 4 distinct vertices, no edge
-/// shorter than 1e-12 times the bounding-box diagonal and a vector area
-/// |(v2 - v0) x (v3 - v1)| / 2 larger than 1e-12 times the squared diagonal
-/// (a face collapsed to a point or a segment has vector area 0).
+/// tolerance); every face must be a quad or a triangle with distinct
+/// vertices, no edge shorter than 1e-12 times the bounding-box diagonal and a
+/// vector area (|(v2 - v0) x (v3 - v1)| / 2 for a quad, |(v1 - v0) x (v2 -
+/// v0)| / 2 for a triangle) larger than 1e-12 times the squared diagonal (a
+/// face collapsed to a point or a segment has vector area 0). Faces of 5 or
+/// more vertices are refused.
 ///
 /// (The other entry points need edge indices: there, a `CGAL::Polyhedron_3`
 /// must have items with ids, `CGAL::Polyhedron_items_with_id_3`, and a
@@ -300,20 +326,23 @@ void validate_quad_mesh(const PolygonMesh& pm,
     std::vector<std::size_t> ids;
     for(auto v : CGAL::vertices_around_face(halfedge(f, pm), pm))
       ids.push_back(get(vim, v));
-    if(ids.size() != 4)
-      fail("has " + std::to_string(ids.size()) +
-           " vertices; only quad meshes are supported");
-    for(int i = 0; i < 4; ++i)
-      for(int j = i + 1; j < 4; ++j)
+    const std::size_t n = ids.size();
+    if(n != 3 && n != 4)
+      fail("has " + std::to_string(n) +
+           " vertices; only quads and triangles are supported");
+    for(std::size_t i = 0; i < n; ++i)
+      for(std::size_t j = i + 1; j < n; ++j)
         if(ids[i] == ids[j])
           fail("uses vertex " + std::to_string(ids[i]) + " twice");
 
-    const Quad q = face_quad(f, pm, Quad_orientation(), np);
-    for(int k = 0; k < 4; ++k)
-      if(!((q[(k + 1) & 3] - q[k]).norm() > min_length))
+    const Panel q = face_panel(f, pm, Quad_orientation(), np);
+    for(std::size_t k = 0; k < n; ++k)
+      if(!((q[int((k + 1) % n)] - q[int(k)]).norm() > min_length))
         fail("has a zero-length edge between vertices " + std::to_string(ids[k]) +
-             " and " + std::to_string(ids[(k + 1) & 3]));
-    if(!(0.5 * (q[2] - q[0]).cross(q[3] - q[1]).norm() > min_area))
+             " and " + std::to_string(ids[(k + 1) % n]));
+    const Eigen::Vector3d vector_area = n == 4 ? Eigen::Vector3d((q[2] - q[0]).cross(q[3] - q[1]))
+                                               : Eigen::Vector3d((q[1] - q[0]).cross(q[2] - q[0]));
+    if(!(0.5 * vector_area.norm() > min_area))
       fail("is collapsed: its area is zero");
   }
 }

@@ -169,5 +169,27 @@ class MakeKSetTilable(unittest.TestCase):
         self.assertLess(longest_pause, 0.5 * duration)
 
 
+class TrianglesTest(unittest.TestCase):
+    # Two unit squares and two right isosceles triangles on top, the apex
+    # moved so that the two triangles differ.
+    vertices = np.array([[0, 0, 0], [1, 0, 0], [2, 0, 0], [0, 1, 0], [1, 1, 0], [2, 1, 0],
+                         [1.15, 1.9, 0.2]], dtype=np.float64)
+    faces = np.array([[0, 1, 4, 3], [1, 2, 5, 4], [3, 4, 6, -1], [4, 5, 6, -1]])
+
+    def test_a_fourth_index_of_minus_one_is_a_triangle_with_a_tile_of_its_own(self):
+        r = tilable_surfaces.make_k_set_tilable(self.vertices, self.faces, k=2)
+        self.assertTrue(r["is_tilable"])
+        self.assertEqual(sorted(r["tile_corners"].tolist()), [3, 4])
+        self.assertNotEqual(r["cluster"][0], r["cluster"][2])
+        self.assertEqual(r["cluster"][2], r["cluster"][3])
+        triangle = int(r["cluster"][2])
+        self.assertTrue(np.isnan(r["s_quads"][triangle, 3]).all())
+        self.assertFalse(np.isnan(r["s_quads"][triangle, :3]).any())
+        # The two triangles are congruent: the same sorted edge lengths.
+        v = r["vertices"]
+        lengths = [sorted(np.linalg.norm(v[f[[1, 2, 0]]] - v[f[:3]], axis=1)) for f in self.faces[2:]]
+        np.testing.assert_allclose(lengths[0], lengths[1], atol=1e-6)
+
+
 if __name__ == "__main__":
     unittest.main(argv=sys.argv[:1], verbosity=2)

@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include <ostream>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -45,6 +46,8 @@ inline nlohmann::json tile_count_trials_json(const std::vector<Tile_count_trial>
 
 /// \ingroup PkgTilableSurfacesRef
 /// The report of a run as JSON: K, degree of flexibility, cluster sizes,
+/// the kind of each cluster's tile (`tile_kinds`: `quad` or `triangle`) and
+/// how many tiles of each kind,
 /// whether planar panels were required and the worst distance between the
 /// diagonals of a face, whether mirrored panels were allowed and how many
 /// each cluster has,
@@ -61,10 +64,19 @@ inline nlohmann::json tilability_report_json(const K_set_tilable_result& r,
                                               double congruence_tolerance = 1e-6)
 {
   const Tilability_measure& m = r.optimization.measure;
+  std::vector<std::string> kinds;
+  std::size_t triangles = 0;
+  for(const Panel& s : m.s_quads)
+  {
+    kinds.push_back(s.is_triangle() ? "triangle" : "quad");
+    triangles += s.is_triangle() ? 1 : 0;
+  }
   return {
     {"K", m.number_of_clusters},
     {"degree_of_flexibility", m.degree_of_flexibility},
     {"cluster_sizes", m.cluster_sizes},
+    {"tile_kinds", kinds},
+    {"tiles_by_kind", {{"quad", kinds.size() - triangles}, {"triangle", triangles}}},
     {"planar_panels",
      {{"required", m.requires_planar_tiles}, {"planarity_error", m.planarity_error},
       {"length_scale", "mean edge length"}}},

@@ -42,7 +42,7 @@ struct Tile_row
 inline Tile_row tile_row(const Tile& t)
 {
   const std::array<double, 4> edges = edge_lengths(t.corners);
-  const double mean_edge = 0.25 * (edges[0] + edges[1] + edges[2] + edges[3]);
+  const double mean_edge = (edges[0] + edges[1] + edges[2] + edges[3]) / double(t.corners.size());
   return Tile_row{edges, diagonal_lengths(t.corners), Tilable_surfaces::signed_volume(t.corners),
                   planarity_defect(t.corners), diagonal_distance(t.corners) <= 1e-6 * mean_edge};
 }
@@ -69,33 +69,46 @@ inline void check_tiles(const std::vector<Tile>& tiles)
 /// the diagonals `d02, d13`, `signed_volume`, `planarity` (distance of t3 to
 /// the plane of t0, t1, t2), `planar` (1 if the diagonals are within 1e-6 of
 /// the tile's mean edge length of each other, a flat mold) and
-/// `worst_deviation`. Full double precision.
+/// `worst_deviation`, then `kind` (`quad` or `triangle`). An S-triangle's
+/// row leaves `t3x, t3y, t3z`, `e30`, `d02` and `d13` empty, and its `e23`
+/// is the edge t2t0. Full double precision.
 /// \throws Invalid_input if a tile has a non-finite number; nothing is
 /// written then.
 inline bool write_tile_catalog_CSV(std::ostream& os, const std::vector<Tile>& tiles)
 {
   internal::check_tiles(tiles);
   os << "id,instances,mirrored,t0x,t0y,t0z,t1x,t1y,t1z,t2x,t2y,t2z,t3x,t3y,t3z,"
-        "e01,e12,e23,e30,d02,d13,signed_volume,planarity,planar,worst_deviation\n";
+        "e01,e12,e23,e30,d02,d13,signed_volume,planarity,planar,worst_deviation,kind\n";
   os << std::setprecision(std::numeric_limits<double>::max_digits10);
   for(const Tile& t : tiles)
   {
     const internal::Tile_row r = internal::tile_row(t);
     os << t.id << ',' << t.instance_count << ',' << t.mirrored_count;
+    const bool triangle = t.corners.is_triangle();
     for(const Eigen::Vector3d& p : t.corners)
       os << ',' << p.x() << ',' << p.y() << ',' << p.z();
-    for(double e : r.edges) os << ',' << e;
-    for(double d : r.diagonals) os << ',' << d;
+    if(triangle) os << ",,,";
+    for(int k = 0; k < 4; ++k)
+    {
+      os << ',';
+      if(k < t.corners.size()) os << r.edges[std::size_t(k)];
+    }
+    for(double d : r.diagonals)
+    {
+      os << ',';
+      if(!triangle) os << d;
+    }
     os << ',' << r.signed_volume << ',' << r.planarity << ',' << (r.is_planar ? 1 : 0) << ','
-       << t.worst_deviation << '\n';
+       << t.worst_deviation << ',' << (triangle ? "triangle" : "quad") << '\n';
   }
   return bool(os);
 }
 
 /// \ingroup PkgTilableSurfacesRef
 /// The catalog as a JSON array, one object per tile with the fields of
-/// `write_tile_catalog_CSV()` (`corners` as 4 arrays of 3 numbers, `edges`
-/// and `diagonals` as arrays).
+/// `write_tile_catalog_CSV()` (`corners` as 4 arrays of 3 numbers, 3 for an
+/// S-triangle, `edges` and `diagonals` as arrays, an S-triangle's 3 edges and
+/// no diagonal).
 /// \throws Invalid_input if a tile has a non-finite number.
 inline nlohmann::json tile_catalog_json(const std::vector<Tile>& tiles)
 {
@@ -110,9 +123,11 @@ inline nlohmann::json tile_catalog_json(const std::vector<Tile>& tiles)
     catalog.push_back({{"id", t.id},
                        {"instances", t.instance_count},
                        {"mirrored", t.mirrored_count},
+                       {"kind", t.corners.is_triangle() ? "triangle" : "quad"},
                        {"corners", corners},
-                       {"edges", r.edges},
-                       {"diagonals", r.diagonals},
+                       {"edges", std::vector<double>(r.edges.begin(), r.edges.begin() + t.corners.size())},
+                       {"diagonals", t.corners.is_triangle() ? std::vector<double>()
+                                                             : std::vector<double>(r.diagonals.begin(), r.diagonals.end())},
                        {"signed_volume", r.signed_volume},
                        {"planarity", r.planarity},
                        {"planar", r.is_planar},

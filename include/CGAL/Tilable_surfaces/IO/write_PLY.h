@@ -35,8 +35,10 @@ namespace IO {
 /// \ingroup PkgTilableSurfacesRef
 /// Writes `pm` to `os` in PLY, vertices and faces in the order of
 /// `vertices(pm)` and `faces(pm)`, with the face properties `cluster` (int),
-/// `orientation` (uchar, 0..7) and `red`, `green`, `blue`, `alpha` (uchar, one
-/// distinct colour per cluster, see `cluster_colors()`).
+/// `orientation` (uchar, 0..7), `corners` (uchar: 4 for a quad, 3 for a
+/// triangle, so that a reader that drops the face lists still tells the kinds
+/// apart) and `red`, `green`, `blue`, `alpha` (uchar, one distinct colour per
+/// cluster, see `cluster_colors()`).
 ///
 /// \cgalNamedParamsBegin
 ///   \cgalParamNBegin{face_cluster_map} cluster ids 0..K-1 (required) \cgalParamNEnd
@@ -47,7 +49,8 @@ namespace IO {
 /// \cgalNamedParamsEnd
 /// \returns whether the stream is good after writing.
 /// \throws Invalid_input if `pm` fails `validate_quad_mesh()` or a face has
-/// a negative cluster or an orientation out of 0..7; nothing is written then.
+/// a negative cluster or an orientation that is not one of its own; nothing
+/// is written then.
 template <typename PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 bool write_tiled_PLY(std::ostream& os, const PolygonMesh& pm,
                      const CGAL_NP_CLASS& np = parameters::default_values())
@@ -96,12 +99,14 @@ bool write_tiled_PLY(std::ostream& os, const PolygonMesh& pm,
   auto cluster_property = out.add_property_map<Output_mesh::Face_index, int>("f:cluster", 0).first;
   auto orientation_property =
     out.add_property_map<Output_mesh::Face_index, std::uint8_t>("f:orientation", 0).first;
+  auto corners_property = out.add_property_map<Output_mesh::Face_index, std::uint8_t>("f:corners", 4).first;
   auto color_property = out.add_property_map<Output_mesh::Face_index, CGAL::IO::Color>("f:color").first;
   for(const auto& fp : face_pairs)
   {
     const std::size_t c = std::size_t(get(clusters, fp.first));
     cluster_property[fp.second] = int(c);
     orientation_property[fp.second] = std::uint8_t(int(get(orientations, fp.first)));
+    corners_property[fp.second] = std::uint8_t(out.degree(fp.second));
     color_property[fp.second] = colors[c];
   }
 

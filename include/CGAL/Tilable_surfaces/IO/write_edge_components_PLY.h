@@ -79,9 +79,10 @@ bool write_edge_components_PLY(std::ostream& os, const PolygonMesh& pm,
     std::vector<Output_mesh::Vertex_index> ring;
     for(const auto& p : corners) ring.push_back(out.add_vertex(to_point(p)));
     const auto face_edges = face_edge_halfedges(f, pm);
-    for(std::size_t j = 0; j < 4; ++j)
+    const std::size_t n = ring.size();
+    for(std::size_t j = 0; j < n; ++j)
     {
-      const auto t = out.add_face(ring[j], ring[(j + 1) % 4], c);
+      const auto t = out.add_face(ring[j], ring[(j + 1) % n], c);
       color[t] = colors[std::size_t(get(edge_component_map, edge(face_edges[j], pm)))];
     }
   }

@@ -79,9 +79,40 @@ enum Cluster_ids
 // K not known beforehand: 1 + the largest id read.
 constexpr std::size_t unknown_number_of_clusters = (std::numeric_limits<std::size_t>::max)();
 
+// The number of corners of every cluster's template, 4 or 3 (an empty
+// cluster counts as a quad one); throws if a cluster holds quads and triangles.
+template <typename PolygonMesh, typename FaceIndexMap>
+std::vector<int> cluster_corner_counts(const PolygonMesh& pm, FaceIndexMap fim, const Face_clustering& fc)
+{
+  std::vector<int> corners(fc.number_of_clusters, 0);
+  std::vector<std::size_t> witness(fc.number_of_clusters, 0);
+  for(auto f : faces(pm))
+  {
+    const std::size_t i = std::size_t(get(fim, f));
+    const std::size_t c = fc.label[i];
+    const int n = face_corner_count(f, pm);
+    if(corners[c] == 0)
+    {
+      corners[c] = n;
+      witness[c] = i;
+    }
+    else if(corners[c] != n)
+    {
+      const std::size_t triangle = n == 3 ? i : witness[c], quad = n == 3 ? witness[c] : i;
+      throw Invalid_input("cluster " + std::to_string(c) + " holds both the triangle " +
+                          std::to_string(triangle) + " and the quad " + std::to_string(quad) +
+                          ": a cluster holds one kind of face", Invalid_input::FACE, triangle);
+    }
+  }
+  for(int& n : corners)
+    if(n == 0) n = 4;
+  return corners;
+}
+
 // Reads the clustering in `cluster_map` and `orientation_map`, checking every
-// id against `number_of_clusters` (if known) and every orientation against
-// 0..7, and, with CONTIGUOUS_IDS, that no id in 0..K-1 is unused.
+// id against `number_of_clusters` (if known), every orientation against those
+// of its face (0..7, a triangle's 0, 1, 2, 4, 5, 6) and that no cluster mixes
+// quads and triangles, and, with CONTIGUOUS_IDS, that no id in 0..K-1 is unused.
 template <typename PolygonMesh, typename FaceIndexMap, typename ClusterMap, typename OrientationMap>
 Face_clustering read_face_clustering(const PolygonMesh& pm, FaceIndexMap fim, ClusterMap cluster_map,
                                      OrientationMap orientation_map,
@@ -97,7 +128,7 @@ Face_clustering read_face_clustering(const PolygonMesh& pm, FaceIndexMap fim, Cl
     const std::size_t i = std::size_t(get(fim, f));
     const long long c = static_cast<long long>(get(cluster_map, f));
     const long long o = static_cast<long long>(static_cast<int>(get(orientation_map, f)));
-    check_face_label(i, c, o, number_of_clusters);
+    check_face_label(i, c, o, number_of_clusters, face_corner_count(f, pm));
     fc.label[i] = std::size_t(c);
     fc.orientation[i] = Quad_orientation(int(o));
     largest = (std::max)(largest, std::size_t(c));
@@ -105,6 +136,7 @@ Face_clustering read_face_clustering(const PolygonMesh& pm, FaceIndexMap fim, Cl
   fc.number_of_clusters = number_of_clusters != unknown_number_of_clusters
                             ? number_of_clusters
                             : (fc.label.empty() ? 0 : largest + 1);
+  cluster_corner_counts(pm, fim, fc);
   if(ids == CONTIGUOUS_IDS)
   {
     const std::vector<std::size_t> sizes = fc.cluster_sizes();

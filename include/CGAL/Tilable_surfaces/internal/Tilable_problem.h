@@ -47,14 +47,15 @@ struct Equality_groups
 struct Tilable_problem
 {
   Point_matrix points;                          // in the mesh's own units
-  std::vector<std::array<int, 4>> face_corners; // corner i = template corner t_i
+  std::vector<std::array<int, 4>> face_corners; // corner i = template corner t_i; -1 after a triangle's 3
   std::vector<std::size_t> face_cluster;
   std::size_t number_of_clusters = 0;
   std::size_t degree_of_flexibility = 0;
   std::vector<std::array<int, 2>> edges;
   Equality_groups edge_groups;     // F_e: mesh edges, one group per component
-  Equality_groups diagonal_groups; // F_a: diagonals t0t2 and t1t3, two groups per cluster
-  Equality_groups volume_groups;   // F_o: corners, one group per cluster
+  Equality_groups diagonal_groups; // F_a: diagonals t0t2 and t1t3, two groups per quad cluster
+  Equality_groups volume_groups;   // F_o: corners, one group per quad cluster
+  // (A triangle is fixed by its edges: its clusters have no diagonal or volume group.)
   // ALLOW_MIRRORED_PANELS: an instance may be the mirror image of its
   // S-quad. Then the volume groups list each instance of negative signed
   // volume with t1 and t3 swapped, which negates the volume and keeps the
@@ -85,13 +86,20 @@ Point_matrix read_points(const PolygonMesh& pm, const VertexPointMap& vpm, const
   return points;
 }
 
-// Corner i of face `face` is t_i of its S-quad.
-inline Quad instance(const Tilable_problem& problem, const Point_matrix& points, std::size_t face)
+// The number of corners of face `face`: 3 or 4.
+inline int corner_count(const Tilable_problem& problem, std::size_t face)
 {
-  Quad q;
-  for(int i = 0; i < 4; ++i)
-    q[i] = points.row(problem.face_corners[face][i]).transpose();
-  return q;
+  return problem.face_corners[face][3] < 0 ? 3 : 4;
+}
+
+// Corner i of face `face` is t_i of its S-quad (or S-triangle).
+inline Panel instance(const Tilable_problem& problem, const Point_matrix& points, std::size_t face)
+{
+  const auto& c = problem.face_corners[face];
+  auto corner = [&](int i) -> Eigen::Vector3d { return points.row(c[std::size_t(i)]).transpose(); };
+  if(corner_count(problem, face) == 3)
+    return Panel(corner(0), corner(1), corner(2));
+  return Panel{{corner(0), corner(1), corner(2), corner(3)}};
 }
 
 // The clustering of `pm` read from the named parameters `face_cluster_map`
@@ -135,10 +143,12 @@ Tilable_problem make_tilable_problem(const PolygonMesh& pm, const NamedParameter
     std::array<int, 4> face_order;
     int n = 0;
     for(auto v : CGAL::vertices_around_face(halfedge(face_of[i], pm), pm))
-      face_order[n++] = int(get(vim, v));
+      face_order[std::size_t(n++)] = int(get(vim, v));
     const Quad_orientation o = clustering.orientation[i];
-    problem.face_corners.push_back({{face_order[o(0)], face_order[o(1)],
-                                     face_order[o(2)], face_order[o(3)]}});
+    std::array<int, 4> corners{{-1, -1, -1, -1}};
+    for(int k = 0; k < n; ++k)
+      corners[std::size_t(k)] = face_order[std::size_t(o(k, n))];
+    problem.face_corners.push_back(corners);
     problem.face_cluster.push_back(clustering.label[i]);
     for(auto h : face_edge_halfedges(face_of[i], pm))
     {
@@ -162,6 +172,9 @@ Tilable_problem make_tilable_problem(const PolygonMesh& pm, const NamedParameter
     by_cluster[problem.face_cluster[i]].push_back(i);
   for(const auto& members : by_cluster)
   {
+    // The kinds are never mixed in a cluster (read_face_clustering() checks).
+    if(!members.empty() && corner_count(problem, members.front()) == 3)
+      continue;
     for(int d = 0; d < 2; ++d)
     {
       for(std::size_t i : members)

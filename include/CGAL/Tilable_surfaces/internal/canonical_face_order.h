@@ -39,7 +39,7 @@ namespace internal {
 // `quads` are the faces' corners by the same index.
 template <typename PolygonMesh, typename FaceIndexMap>
 std::vector<std::size_t> canonical_face_ranks(const PolygonMesh& pm, FaceIndexMap fim,
-                                              const std::vector<Quad>& quads)
+                                              const std::vector<Panel>& quads)
 {
   typedef typename boost::graph_traits<PolygonMesh>::face_descriptor face_descriptor;
   const std::size_t n = quads.size();
@@ -51,7 +51,7 @@ std::vector<std::size_t> canonical_face_ranks(const PolygonMesh& pm, FaceIndexMa
   Eigen::Vector3d middle = Eigen::Vector3d::Zero();
   for(std::size_t i = 0; i < n; ++i)
   {
-    centroid[i] = 0.25 * (quads[i][0] + quads[i][1] + quads[i][2] + quads[i][3]);
+    centroid[i] = quads[i].centroid();
     middle += centroid[i];
   }
   if(n > 0)
@@ -60,7 +60,9 @@ std::vector<std::size_t> canonical_face_ranks(const PolygonMesh& pm, FaceIndexMa
   for(std::size_t i = 0; i < n; ++i)
   {
     distance[i] = (centroid[i] - middle).squaredNorm();
-    area[i] = ((quads[i][2] - quads[i][0]).cross(quads[i][3] - quads[i][1])).norm();
+    const Panel& q = quads[i];
+    area[i] = q.is_triangle() ? ((q[1] - q[0]).cross(q[2] - q[0])).norm()
+                              : ((q[2] - q[0]).cross(q[3] - q[1])).norm();
   }
   auto near = [](double a, double b) { return std::abs(a - b) <= 1e-9 * (std::max)(a, b); };
   // Start candidates, farthest first: a start is the first unranked one after
@@ -149,13 +151,13 @@ struct Canonical_faces
 {
   FaceIndexMap original_index;
   std::vector<std::size_t> rank;
-  std::vector<Quad> quads;
+  std::vector<Panel> quads;
 
   Canonical_faces() = default;
 
   // `original_quads`: the corners by the index of `fim`.
   template <typename PolygonMesh>
-  Canonical_faces(const PolygonMesh& pm, FaceIndexMap fim, const std::vector<Quad>& original_quads)
+  Canonical_faces(const PolygonMesh& pm, FaceIndexMap fim, const std::vector<Panel>& original_quads)
     : original_index(fim)
     , rank(canonical_face_ranks(pm, fim, original_quads))
     , quads(by_canonical_index(original_quads, rank))

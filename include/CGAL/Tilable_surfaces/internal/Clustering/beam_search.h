@@ -113,7 +113,7 @@ public:
   typedef Beam_state<PolygonMesh, MergeCosts> State;
 
   // `leaders[c]` is the quad labelling initial cluster c's S-quad.
-  Beam_search(const MergeCosts& costs, const std::vector<Quad>& leaders,
+  Beam_search(const MergeCosts& costs, const std::vector<Panel>& leaders,
               Orientation_policy policy, const Configuration_score& score,
               std::size_t width, bool auto_merge)
     : m_costs(costs), m_leaders(leaders), m_policy(policy)
@@ -237,8 +237,12 @@ private:
   // Up to this many groups, every pair is proposed (see the file comment).
   static std::size_t exhaustive_limit() { return 128; }
 
+  // Groups of quads and of triangles never merge: their cost is infinite,
+  // which no bound admits.
   double cost(const State& s, std::size_t a, std::size_t b) const
   {
+    if(m_leaders[a].size() != m_leaders[b].size())
+      return std::numeric_limits<double>::infinity();
     return m_costs.cost(s.members[a], s.groups[a], s.members[b], s.groups[b]);
   }
 
@@ -275,7 +279,7 @@ private:
       it = m_correspondences.emplace(pair_key(key), fast_best_match(m_leaders[key.first],
                                                                     m_leaders[key.second],
                                                                     m_policy).orientation).first;
-    return swapped ? it->second.inverse() : it->second;
+    return swapped ? it->second.inverse(m_leaders[a].size()) : it->second;
   }
 
   // Computes the missing correspondences of `pairs` (a < b) in parallel: the
@@ -298,10 +302,11 @@ private:
   static std::size_t joined_components(const State& s, std::size_t kept, std::size_t removed,
                                         Quad_orientation corr)
   {
+    const int n = s.graph.corner_count(kept);
     std::array<std::pair<std::size_t, std::size_t>, 4> links;
-    for(int k = 0; k < 4; ++k)
-      links[k] = {s.graph.component(kept, k), s.graph.component(removed, corr.face_edge(k))};
-    return number_of_joins(links, 4);
+    for(int k = 0; k < n; ++k)
+      links[std::size_t(k)] = {s.graph.component(kept, k), s.graph.component(removed, corr.face_edge(k, n))};
+    return number_of_joins(links, std::size_t(n));
   }
 
   // The lowest score a merge of cost `cost` can get from `s` (see the file comment).
@@ -399,10 +404,11 @@ private:
       if(score_lower_bound(s, c) > bound.value())
         continue;
       const Quad_orientation corr = correspondence(a, b);
+      const int n = s.graph.corner_count(a);
       bool identical = true;
-      for(int k = 0; k < 4; ++k)
+      for(int k = 0; k < n; ++k)
         identical = identical &&
-                    s.graph.component(a, k) == s.graph.component(b, corr.face_edge(k));
+                    s.graph.component(a, k) == s.graph.component(b, corr.face_edge(k, n));
       if(identical)
         add_proposal(s, parent, a, b, c, bound, out);
     }
@@ -453,7 +459,7 @@ private:
   }
 
   const MergeCosts& m_costs;
-  const std::vector<Quad>& m_leaders;
+  const std::vector<Panel>& m_leaders;
   Orientation_policy m_policy;
   Configuration_score m_score;
   std::size_t m_width;

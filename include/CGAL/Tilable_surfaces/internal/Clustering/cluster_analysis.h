@@ -27,14 +27,14 @@ namespace internal {
 
 struct Cluster_shapes
 {
-  std::vector<Quad> s_quads;                   // per cluster
+  std::vector<Panel> s_quads;                   // per cluster
   std::vector<Quad_orientation> orientation;   // per face
   std::vector<double> distance;                // per face: s(S-quad, face)
   std::size_t degree_of_flexibility = 0;       // when known (finished_clustering())
 };
 
 // S-quads by Procrustes averaging, then each face tagged with its best match.
-inline Cluster_shapes cluster_shapes(const std::vector<Quad>& quads,
+inline Cluster_shapes cluster_shapes(const std::vector<Panel>& quads,
                                      const std::vector<std::size_t>& label, std::size_t k,
                                      Orientation_policy policy)
 {
@@ -58,7 +58,7 @@ inline Cluster_shapes cluster_shapes(const std::vector<Quad>& quads,
 // of the two S-quads, twice). Returns, per member, whether it goes to the new
 // part; the part with members[0] is never the new one. When all descriptors
 // coincide the members are cut in two halves in index order.
-inline std::vector<bool> split_in_two(const std::vector<Quad>& quads,
+inline std::vector<bool> split_in_two(const std::vector<Panel>& quads,
                                       const std::vector<Quad_descriptor>& descriptors,
                                       const std::vector<std::size_t>& members,
                                       Orientation_policy policy, CGAL::Random& random)
@@ -77,8 +77,8 @@ inline std::vector<bool> split_in_two(const std::vector<Quad>& quads,
   {
     std::vector<std::size_t> part[2];
     for(std::size_t i = 0; i < m; ++i) part[second[i] ? 1 : 0].push_back(members[i]);
-    const Quad t0 = procrustes_mean(quads, part[0], policy);
-    const Quad t1 = procrustes_mean(quads, part[1], policy);
+    const Panel t0 = procrustes_mean(quads, part[0], policy);
+    const Panel t1 = procrustes_mean(quads, part[1], policy);
     std::vector<bool> next(m);
     std::vector<char> to_second(m);
     parallel_for(m, [&](std::size_t i) {

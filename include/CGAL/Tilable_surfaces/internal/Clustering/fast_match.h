@@ -38,17 +38,17 @@ namespace internal {
 // A quad with what every match of it needs, computed once.
 struct Prepared_quad
 {
-  Quad corners;
-  Quad centred;
+  Panel corners;
+  Panel centred;
   Eigen::Vector3d mean;
-  std::array<double, 4> radius;  // |corner - mean|
+  std::array<double, 4> radius;  // |corner - mean|, for the first corners.size()
   double squared_size;           // sum of radius^2
 
   Prepared_quad() = default;
-  explicit Prepared_quad(const Quad& q)
-    : corners(q), mean(0.25 * (q[0] + q[1] + q[2] + q[3])), squared_size(0)
+  explicit Prepared_quad(const Panel& q)
+    : corners(q), centred(q), mean(q.centroid()), squared_size(0)
   {
-    for(int i = 0; i < 4; ++i)
+    for(int i = 0; i < q.size(); ++i)
     {
       centred[i] = q[i] - mean;
       radius[i] = centred[i].norm();
@@ -122,13 +122,14 @@ inline Eigen::Matrix3d optimal_rotation(const Eigen::Matrix3d& s, double upper_b
 
 // The best proper rigid motion of `p` onto the corners of `q` listed in the
 // order of `o`; the same motion as `best_rigid_fit(p.corners, reoriented(q.corners, o))`.
-inline Rigid_fit fast_rigid_fit(const Prepared_quad& p, const Quad& p_centred,
+inline Rigid_fit fast_rigid_fit(const Prepared_quad& p, const Panel& p_centred,
                                 const Eigen::Vector3d& p_mean, const Prepared_quad& q,
                                 Quad_orientation o)
 {
+  const int n = p_centred.size();
   Eigen::Matrix3d s = Eigen::Matrix3d::Zero();
-  for(int i = 0; i < 4; ++i)
-    s.noalias() += p_centred[i] * q.centred[o(i)].transpose();
+  for(int i = 0; i < n; ++i)
+    s.noalias() += p_centred[i] * q.centred[o(i, n)].transpose();
   Rigid_fit fit;
   fit.rotation = optimal_rotation(s, std::sqrt(p.squared_size * q.squared_size));
   fit.translation = q.mean - fit.rotation * p_mean;
@@ -142,10 +143,10 @@ inline std::pair<double, Rigid_fit> correspondence_match(const Prepared_quad& p,
                                                          const Prepared_quad& q,
                                                          Quad_orientation o, bool allow_mirror)
 {
-  const Quad target = reoriented(q.corners, o);
+  const Panel target = reoriented(q.corners, o);
   auto residual = [&](const Rigid_fit& f, bool squared) {
     double r = 0;
-    for(int i = 0; i < 4; ++i)
+    for(int i = 0; i < target.size(); ++i)
     {
       const double d2 = (target[i] - f(p.corners[i])).squaredNorm();
       r += squared ? d2 : std::sqrt(d2);
@@ -157,8 +158,8 @@ inline std::pair<double, Rigid_fit> correspondence_match(const Prepared_quad& p,
   {
     // An improper motion is a proper one after the mirror z -> -z.
     const Eigen::DiagonalMatrix<double, 3> mirror(1, 1, -1);
-    Quad mirrored;
-    for(int i = 0; i < 4; ++i) mirrored[i] = mirror * p.centred[i];
+    Panel mirrored = p.centred;
+    for(Eigen::Vector3d& c : mirrored) c = mirror * c;
     Rigid_fit mirror_fit = fast_rigid_fit(p, mirrored, mirror * p.mean, q, o);
     mirror_fit.rotation = mirror_fit.rotation * mirror;
     mirror_fit.is_mirrored = true;
@@ -168,9 +169,15 @@ inline std::pair<double, Rigid_fit> correspondence_match(const Prepared_quad& p,
   return {residual(fit, false), fit};
 }
 
-inline int number_of_orientations(Orientation_policy policy)
+// The correspondences `policy` admits between panels of `n` corners, by
+// increasing index.
+inline Bounded_list<Quad_orientation, 8> admissible_orientations(int n, Orientation_policy policy)
 {
-  return policy == NO_TURNED_OVER_PANELS ? 4 : 8;
+  Bounded_list<Quad_orientation, 8> r;
+  for(int o = 0; o < 8; ++o)
+    if(is_admissible(Quad_orientation(o), n, policy))
+      r.push_back(Quad_orientation(o));
+  return r;
 }
 
 // `best_match(p, q, policy)` on prepared quads, computed faster; equal up to
@@ -178,17 +185,18 @@ inline int number_of_orientations(Orientation_policy policy)
 inline Quad_match fast_best_match(const Prepared_quad& p, const Prepared_quad& q,
                                   Orientation_policy policy = PROPER_RIGID_MOTIONS)
 {
-  const int m = number_of_orientations(policy);
-
+  const int n = p.corners.size();
+  if(q.corners.size() != n)
+    return Quad_match();
   // Correspondences by increasing lower bound; a stable order keeps the tie
   // rule of `best_match()` (smallest index) among equal bounds.
   std::array<std::pair<double, int>, 8> order;
-  for(int o = 0; o < m; ++o)
+  int m = 0;
+  for(Quad_orientation orientation : admissible_orientations(n, policy))
   {
-    const Quad_orientation orientation(o);
     double bound = 0;
-    for(int i = 0; i < 4; ++i) bound += std::abs(q.radius[orientation(i)] - p.radius[i]);
-    order[o] = {bound, o};
+    for(int i = 0; i < n; ++i) bound += std::abs(q.radius[orientation(i, n)] - p.radius[i]);
+    order[m++] = {bound, orientation.index()};
   }
   std::sort(order.begin(), order.begin() + m);
 
@@ -213,7 +221,7 @@ inline Quad_match fast_best_match(const Prepared_quad& p, const Prepared_quad& q
 }
 
 // `best_match(p, q, policy)`, computed faster; equal up to rounding.
-inline Quad_match fast_best_match(const Quad& p, const Quad& q,
+inline Quad_match fast_best_match(const Panel& p, const Panel& q,
                                   Orientation_policy policy = PROPER_RIGID_MOTIONS)
 {
   return fast_best_match(Prepared_quad(p), Prepared_quad(q), policy);

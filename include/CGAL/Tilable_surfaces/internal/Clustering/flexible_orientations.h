@@ -66,7 +66,7 @@ std::vector<Shared_edge> shared_edges(const PolygonMesh& pm, FaceIndexMap fim)
   for(auto f : face_of)
   {
     const auto face_edges = face_edge_halfedges(f, pm);
-    for(int j = 0; j < 4; ++j)
+    for(int j = 0; j < int(face_edges.size()); ++j)
     {
       const std::size_t e = get(eim, edge(face_edges[std::size_t(j)], pm));
       if(first[e] == std::size_t(-1))
@@ -85,13 +85,19 @@ class Flexible_orientations
 {
 public:
   // `dissimilarity[f][o]`: of face f to its S-quad under orientation o, +inf
-  // if o is not admissible; `orientation`: the start, admissible.
+  // if o is not admissible; `corners[f]`: 3 or 4; `orientation`: the start,
+  // admissible.
   Flexible_orientations(const std::vector<Shared_edge>& edges, const std::vector<std::size_t>& label,
                         std::size_t k, const std::vector<std::array<double, 8> >& dissimilarity,
-                        std::vector<Quad_orientation> orientation)
-    : m_edges(edges), m_label(label), m_k(k), m_d(dissimilarity)
+                        const std::vector<int>& corners, std::vector<Quad_orientation> orientation)
+    : m_edges(edges), m_label(label), m_k(k), m_d(dissimilarity), m_corners(corners)
     , m_orientation(std::move(orientation)), m_incident(label.size())
   {
+    // Node 4c + 3 of a triangle cluster c is no template edge.
+    std::vector<bool> triangle_cluster(k, false);
+    for(std::size_t f = 0; f < label.size(); ++f)
+      if(corners[f] == 3) triangle_cluster[label[f]] = true;
+    m_unused_nodes = std::size_t(std::count(triangle_cluster.begin(), triangle_cluster.end(), true));
     for(std::size_t i = 0; i < edges.size(); ++i)
       for(int s = 0; s < 2; ++s)
         m_incident[edges[i].face[s]].push_back(i);
@@ -137,7 +143,7 @@ private:
   std::size_t node(std::size_t i, int s) const
   {
     const std::size_t f = m_edges[i].face[s];
-    return 4 * m_label[f] + std::size_t(m_orientation[f].template_edge(m_edges[i].edge[s]));
+    return 4 * m_label[f] + std::size_t(m_orientation[f].template_edge(m_edges[i].edge[s], m_corners[f]));
   }
 
   // Adds `delta` to the count of the link of shared edge `i`; returns its key
@@ -183,7 +189,7 @@ private:
   std::size_t count_components(Union_find<>& sets) const
   {
     sets.reset(4 * m_k);
-    std::size_t components = 4 * m_k;
+    std::size_t components = 4 * m_k - m_unused_nodes;
     for(const auto& l : m_count)
       if(sets.unite(std::size_t(l.first >> 32), std::size_t(l.first & 0xffffffffu)))
         --components;
@@ -240,6 +246,8 @@ private:
   const std::vector<std::size_t>& m_label;
   std::size_t m_k;
   const std::vector<std::array<double, 8> >& m_d;
+  const std::vector<int>& m_corners;
+  std::size_t m_unused_nodes = 0;
   std::vector<Quad_orientation> m_orientation;
   std::vector<std::vector<std::size_t> > m_incident;
   std::unordered_map<std::uint64_t, int> m_count;  // distinct links and their multiplicity
@@ -254,11 +262,13 @@ private:
 // two faces of an edge put the same S-quad edge on it with the same corners
 // (`mirrored`: the second instance is the first one turned over the edge, a
 // self-loop) or put opposite S-quad edges on it in the same direction (as
-// translated copies on a grid do). Faces where the propagated orientation is
-// not admissible keep `best`, and the propagation goes on from them.
+// translated copies on a grid do; a triangle has no opposite edge). Faces
+// where the propagated orientation is not admissible keep `best`, and the
+// propagation goes on from them.
 inline std::vector<Quad_orientation>
 propagated_orientations(const std::vector<Shared_edge>& edges, const std::vector<std::size_t>& label,
                         const std::vector<std::array<double, 8> >& dissimilarity,
+                        const std::vector<int>& corners,
                         const std::vector<Quad_orientation>& best, bool mirrored)
 {
   const std::size_t n = label.size();
@@ -285,12 +295,14 @@ propagated_orientations(const std::vector<Shared_edge>& edges, const std::vector
         queue.push_back(g);
         // Opposite halfedges: the edge runs the other way in g, so equal
         // corners need the other direction of travel around the template.
-        const int k = r[f].template_edge(e.edge[is.second]);
+        const int n = corners[f];
+        if(!mirrored && n == 3) continue;
+        const int k = r[f].template_edge(e.edge[is.second], n);
         for(int o = 0; o < 8; ++o)
         {
           const Quad_orientation c(o);
           const bool fits = mirrored
-            ? c.is_reversed() != r[f].is_reversed() && c.face_edge(k) == e.edge[1 - is.second]
+            ? c.is_reversed() != r[f].is_reversed() && c.face_edge(k, n) == e.edge[1 - is.second]
             : c.is_reversed() == r[f].is_reversed() && c.face_edge((k + 2) & 3) == e.edge[1 - is.second];
           if(fits && dissimilarity[g][o] < std::numeric_limits<double>::infinity())
             r[g] = c;
@@ -306,26 +318,24 @@ propagated_orientations(const std::vector<Shared_edge>& edges, const std::vector
 // the face's best by more than `tolerance` (so every tag is a near-tie of the
 // best match, never a worse fit).
 inline std::vector<std::array<double, 8> >
-admissible_dissimilarities(const std::vector<Quad>& quads, const std::vector<std::size_t>& label,
-                           const std::vector<Quad>& s_quads, Orientation_policy policy,
+admissible_dissimilarities(const std::vector<Panel>& quads, const std::vector<std::size_t>& label,
+                           const std::vector<Panel>& s_quads, Orientation_policy policy,
                            double tolerance)
 {
   const double inf = std::numeric_limits<double>::infinity();
-  const int m = number_of_orientations(policy);
   std::vector<std::array<double, 8> > d(quads.size());
   parallel_for(quads.size(), [&](std::size_t f) {
     const Prepared_quad p(s_quads[label[f]]), q(quads[f]);
     d[f].fill(inf);
     double best = inf;
-    for(int o = 0; o < m; ++o)
+    for(Quad_orientation o : admissible_orientations(q.corners.size(), policy))
     {
-      d[f][o] = correspondence_match(p, q, Quad_orientation(o),
-                                     policy == ALLOW_MIRRORED_PANELS).first;
-      best = (std::min)(best, d[f][o]);
+      d[f][std::size_t(o.index())] = correspondence_match(p, q, o, policy == ALLOW_MIRRORED_PANELS).first;
+      best = (std::min)(best, d[f][std::size_t(o.index())]);
     }
-    for(int o = 0; o < m; ++o)
-      if(d[f][o] > best + tolerance)
-        d[f][o] = inf;
+    for(double& dissimilarity : d[f])
+      if(dissimilarity > best + tolerance)
+        dissimilarity = inf;
   });
   return d;
 }
@@ -334,23 +344,25 @@ admissible_dissimilarities(const std::vector<Quad>& quads, const std::vector<std
 // started from the best orientations and from both propagated ones.
 template <typename PolygonMesh, typename FaceIndexMap>
 std::vector<Quad_orientation>
-flexible_orientations(const PolygonMesh& pm, FaceIndexMap fim, const std::vector<Quad>& quads,
-                      const std::vector<std::size_t>& label, const std::vector<Quad>& s_quads,
+flexible_orientations(const PolygonMesh& pm, FaceIndexMap fim, const std::vector<Panel>& quads,
+                      const std::vector<std::size_t>& label, const std::vector<Panel>& s_quads,
                       const std::vector<Quad_orientation>& best, Orientation_policy policy,
                       double tolerance)
 {
   const std::vector<Shared_edge> edges = shared_edges(pm, fim);
   const std::vector<std::array<double, 8> > d =
     admissible_dissimilarities(quads, label, s_quads, policy, tolerance);
+  std::vector<int> corners(quads.size());
+  for(std::size_t f = 0; f < quads.size(); ++f) corners[f] = quads[f].size();
   const std::vector<Quad_orientation> starts[3] = {
-    best, propagated_orientations(edges, label, d, best, true),
-    propagated_orientations(edges, label, d, best, false)};
+    best, propagated_orientations(edges, label, d, corners, best, true),
+    propagated_orientations(edges, label, d, corners, best, false)};
   std::vector<Flexible_orientations> searches;
   searches.reserve(3);
   std::size_t chosen = 0;
   for(std::size_t i = 0; i < 3; ++i)
   {
-    searches.emplace_back(edges, label, s_quads.size(), d, starts[i]);
+    searches.emplace_back(edges, label, s_quads.size(), d, corners, starts[i]);
     searches.back().improve(3);  // further sweeps changed no DOF on the test surfaces
     if(searches[i].is_better_than(searches[chosen]))
       chosen = i;

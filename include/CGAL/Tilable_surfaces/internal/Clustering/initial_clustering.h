@@ -33,7 +33,7 @@ inline std::size_t no_index() { return (std::numeric_limits<std::size_t>::max)()
 
 // Returns false, leaving `out` incomplete, as soon as more than
 // `max_clusters` clusters would be needed.
-inline bool leader_clustering(const std::vector<Quad>& quads,
+inline bool leader_clustering(const std::vector<Panel>& quads,
                               const std::vector<Quad_descriptor>& descriptors,
                               const Descriptor_index& index, double tau,
                               Orientation_policy policy, std::size_t max_clusters,

@@ -22,27 +22,27 @@ namespace internal {
 
 // Inverse motion of `fit` applied to `target`: the instance in the frame of
 // the template.
-inline Quad pulled_back(const Quad& target, const Rigid_fit& fit)
+inline Panel pulled_back(const Panel& target, const Rigid_fit& fit)
 {
-  Quad r;
-  for(int i = 0; i < 4; ++i)
-    r[i] = fit.rotation.transpose() * (target[i] - fit.translation);
+  Panel r = target;
+  for(Eigen::Vector3d& p : r)
+    p = fit.rotation.transpose() * (p - fit.translation);
   return r;
 }
 
-inline Quad centred(Quad q)
+inline Panel centred(Panel q)
 {
-  const Eigen::Vector3d c = 0.25 * (q[0] + q[1] + q[2] + q[3]);
+  const Eigen::Vector3d c = q.centroid();
   for(auto& p : q) p -= c;
   return q;
 }
 
 // How far the corners of `b` are from those of `a`, relative to the size of
 // `a` (0 when they coincide, even for a degenerate `a`).
-inline double relative_move(const Quad& a, const Quad& b)
+inline double relative_move(const Panel& a, const Panel& b)
 {
   double change = 0, size = 0;
-  for(int k = 0; k < 4; ++k)
+  for(int k = 0; k < a.size(); ++k)
   {
     change = (std::max)(change, (b[k] - a[k]).norm());
     size = (std::max)(size, (a[k] - a[0]).norm());
@@ -59,25 +59,25 @@ inline double relative_move(const Quad& a, const Quad& b)
 // of its size. The clustering takes 3 passes: the mean only has to rank and
 // match shapes there. The measure runs to 1e-14: its error is judged against
 // the mean, and congruent instances give it exactly.
-inline Quad procrustes_mean(const std::vector<Quad>& quads,
+inline Panel procrustes_mean(const std::vector<Panel>& quads,
                             const std::vector<std::size_t>& members,
                             Orientation_policy policy,
                             const std::vector<Quad_orientation>* orientations = nullptr,
                             int max_passes = 3, double tolerance = 0)
 {
   const std::size_t m = members.size();
-  Quad reference = centred(orientations ? reoriented(quads[members[0]], (*orientations)[0])
+  Panel reference = centred(orientations ? reoriented(quads[members[0]], (*orientations)[0])
                                         : quads[members[0]]);
   const bool allow_mirror = (policy == ALLOW_MIRRORED_PANELS);
-  std::vector<Quad> aligned(m);
+  std::vector<Panel> aligned(m);
   bool moving = true;
   for(int pass = 0; pass < max_passes && moving; ++pass)
   {
     parallel_for(m, [&](std::size_t i) {
-      const Quad& q = quads[members[i]];
+      const Panel& q = quads[members[i]];
       if(orientations)
       {
-        const Quad target = reoriented(q, (*orientations)[i]);
+        const Panel target = reoriented(q, (*orientations)[i]);
         aligned[i] = pulled_back(target, best_rigid_fit(reference, target, allow_mirror));
       }
       else
@@ -86,10 +86,9 @@ inline Quad procrustes_mean(const std::vector<Quad>& quads,
         aligned[i] = pulled_back(reoriented(q, match.orientation), match.fit);
       }
     });
-    Quad mean{{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
-               Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()}};
-    for(const Quad& a : aligned)
-      for(int k = 0; k < 4; ++k) mean[k] += a[k];
+    Panel mean = Panel::zero(reference.size());
+    for(const Panel& a : aligned)
+      for(int k = 0; k < a.size(); ++k) mean[k] += a[k];
     for(auto& p : mean) p /= double(m);
     mean = centred(mean);
     moving = relative_move(reference, mean) > tolerance;
@@ -101,7 +100,7 @@ inline Quad procrustes_mean(const std::vector<Quad>& quads,
 // The S-quad of instances congruent up to proper rigid motions (and mirrors
 // with `allow_mirror`), in their labelling: their Procrustes mean, to
 // convergence.
-inline Quad converged_procrustes_mean(const std::vector<Quad>& instances, bool allow_mirror)
+inline Panel converged_procrustes_mean(const std::vector<Panel>& instances, bool allow_mirror)
 {
   std::vector<std::size_t> members(instances.size());
   for(std::size_t i = 0; i < members.size(); ++i) members[i] = i;

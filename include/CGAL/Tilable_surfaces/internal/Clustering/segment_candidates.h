@@ -50,7 +50,7 @@ struct Quad_grid
 {
   std::size_t rows = 0, columns = 0;
   std::vector<std::size_t> face_at;
-  std::vector<Quad> corners;  // per face; corners 3 and 0 on its edge towards the next column
+  std::vector<Panel> corners;  // per face; corners 3 and 0 on its edge towards the next column
 };
 
 // The faces of the strip through `f` that enters and leaves `f` through
@@ -136,7 +136,7 @@ Quad_grid quad_grid(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
       }
     return false;
   };
-  std::vector<Quad> corners(n);
+  std::vector<Panel> corners(n);
   for(std::size_t r = 0; r < rows; ++r)
     for(std::size_t c = 0; c < columns; ++c)
     {
@@ -183,7 +183,7 @@ struct Run_option
   }
 };
 
-inline Eigen::Matrix<double, 6, 1> corner_distances(const Quad& q)
+inline Eigen::Matrix<double, 6, 1> corner_distances(const Panel& q)
 {
   Eigen::Matrix<double, 6, 1> d;
   d << (q[1] - q[0]).norm(), (q[2] - q[1]).norm(), (q[3] - q[2]).norm(), (q[0] - q[3]).norm(),

@@ -26,6 +26,7 @@
 
 #include <CGAL/Tilable_surfaces/internal/Clustering/cluster_analysis.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/initial_clustering.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/panel_kinds.h>
 #include <CGAL/Tilable_surfaces/internal/Union_find.h>
 #include <CGAL/Tilable_surfaces/internal/parallel_for.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
@@ -57,7 +58,7 @@ inline std::size_t relabel_by_first_face(std::vector<std::size_t>& label)
 }
 
 // Splits the largest initial clusters until there are k of them.
-inline void split_to(std::size_t k, const std::vector<Quad>& quads,
+inline void split_to(std::size_t k, const std::vector<Panel>& quads,
                      const std::vector<Quad_descriptor>& descriptors, Orientation_policy policy,
                      CGAL::Random& random, Initial_clustering& init)
 {
@@ -122,10 +123,11 @@ std::array<std::vector<std::size_t>, 2> quad_strips(const PolygonMesh& pm, FaceI
 // (Edge_sharing_graph::length_deviation_after_merge(), the S-quads matched by
 // their best correspondence), so that merged strips tie few lengths together
 // (on a tube: congruent rings first, then rings of close radii). Labels are
-// renumbered by first face.
+// renumbered by first face. A quad cluster and a triangle cluster never
+// merge: with fewer than k clusters of one kind left, the merges stop early.
 template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
 void merge_strips_to(std::size_t k, const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
-                     const std::vector<Quad>& quads, Orientation_policy policy,
+                     const std::vector<Panel>& quads, Orientation_policy policy,
                      std::vector<std::size_t>& label, std::size_t s)
 {
   const Cluster_shapes shapes = cluster_shapes(quads, label, s, policy);
@@ -149,6 +151,8 @@ void merge_strips_to(std::size_t k, const PolygonMesh& pm, FaceIndexMap fim, Ver
           const double x = graph.length_deviation_after_merge(a, b, correspondence[a * s + b]);
           if(x < best) { best = x; kept = a; removed = b; }
         }
+    if(kept == removed)
+      break;
     graph.merge_clusters(kept, removed, correspondence[kept * s + removed]);
     parent[removed] = kept;
   }
@@ -163,7 +167,7 @@ void merge_strips_to(std::size_t k, const PolygonMesh& pm, FaceIndexMap fim, Ver
 // spread, or split by shape.
 template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
 void bring_to(std::size_t k, const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
-              const std::vector<Quad>& quads, const std::vector<Quad_descriptor>& descriptors,
+              const std::vector<Panel>& quads, const std::vector<Quad_descriptor>& descriptors,
               Orientation_policy policy, CGAL::Random& random, std::vector<std::size_t>& label,
               std::size_t s)
 {
@@ -192,17 +196,20 @@ void bring_to(std::size_t k, const PolygonMesh& pm, FaceIndexMap fim, VertexPoin
 // positions around (b) keep the bend while giving up some growth. The pairs
 // tried: b in {1, 2, 3, 4, 6, 8, 12, 16} with a = ceil(k / b), and the same
 // with the directions swapped. A direction with more than `max_strips`
-// strips (O(S^3) greedy merges) is left out.
+// strips (O(S^3) greedy merges) is left out. On a mesh with triangles, the
+// strips and the final clusters are split by kind first (separate_kinds()).
 template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
 std::vector<std::vector<std::size_t> >
-strip_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, const std::vector<Quad>& quads,
+strip_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, const std::vector<Panel>& quads,
                   const std::vector<Quad_descriptor>& descriptors, std::size_t k,
                   Orientation_policy policy, CGAL::Random& random, std::size_t max_strips = 400)
 {
-  const std::array<std::vector<std::size_t>, 2> strips = quad_strips(pm, fim);
+  std::array<std::vector<std::size_t>, 2> strips = quad_strips(pm, fim);
+  const bool triangles = has_triangles(quads);
   std::array<std::size_t, 2> count;
   for(int d = 0; d < 2; ++d)
-    count[d] = 1 + *std::max_element(strips[d].begin(), strips[d].end());
+    count[d] = triangles ? separate_kinds(quads, strips[d])
+                         : 1 + *std::max_element(strips[d].begin(), strips[d].end());
   std::vector<std::vector<std::size_t> > result;
   for(int first = 0; first < 2; ++first)
     for(std::size_t b : {1, 2, 3, 4, 6, 8, 12, 16})
@@ -221,10 +228,12 @@ strip_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, c
         else
           merge_strips_to(groups[d], pm, fim, vpm, quads, policy, grouped[d], count[d]);
       }
+      // (Without triangles, grouped[1] is below groups[1].)
+      const std::size_t columns = 1 + *std::max_element(grouped[1].begin(), grouped[1].end());
       std::vector<std::size_t> label(strips[0].size());
       for(std::size_t f = 0; f < label.size(); ++f)
-        label[f] = grouped[0][f] * groups[1] + grouped[1][f];
-      const std::size_t s = relabel_by_first_face(label);
+        label[f] = grouped[0][f] * columns + grouped[1][f];
+      const std::size_t s = triangles ? separate_kinds(quads, label) : relabel_by_first_face(label);
       bring_to(k, pm, fim, vpm, quads, descriptors, policy, random, label, s);
       if(std::find(result.begin(), result.end(), label) == result.end())
         result.push_back(label);

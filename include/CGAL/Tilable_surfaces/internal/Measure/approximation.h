@@ -49,10 +49,10 @@ inline Distance_summary one_sided_distance(const Tilable_problem& problem,
   std::vector<K::Triangle_3> triangles;
   for(std::size_t f = 0; f < problem.face_corners.size(); ++f)
   {
-    const Quad q = instance(problem, reference, f);
-    const K::Point_3 centre = point((q[0] + q[1] + q[2] + q[3]) / 4.0);
-    for(int i = 0; i < 4; ++i)
-      triangles.emplace_back(point(q[i]), point(q[(i + 1) & 3]), centre);
+    const Panel q = instance(problem, reference, f);
+    const K::Point_3 centre = point(q.centroid());
+    for(int i = 0; i < q.size(); ++i)
+      triangles.emplace_back(point(q[i]), point(q[(i + 1) % q.size()]), centre);
   }
   Tree tree(triangles.begin(), triangles.end());
   tree.accelerate_distance_queries();
@@ -68,19 +68,20 @@ inline Distance_summary one_sided_distance(const Tilable_problem& problem,
   // The vertices of the faces: an isolated vertex is no part of the surface.
   std::vector<bool> on_surface(std::size_t(sampled.rows()), false);
   for(const auto& corners : problem.face_corners)
-    for(int v : corners) on_surface[std::size_t(v)] = true;
+    for(int v : corners)
+      if(v >= 0) on_surface[std::size_t(v)] = true;
   for(Eigen::Index v = 0; v < sampled.rows(); ++v)
     if(on_surface[std::size_t(v)])
       sample(sampled.row(v).transpose());
   for(std::size_t f = 0; f < problem.face_corners.size(); ++f)
   {
-    const Quad q = instance(problem, sampled, f);
-    const Eigen::Vector3d centre = (q[0] + q[1] + q[2] + q[3]) / 4.0;
+    const Panel q = instance(problem, sampled, f);
+    const Eigen::Vector3d centre = q.centroid();
     sample(centre);
-    for(int i = 0; i < 4; ++i)
+    for(int i = 0; i < q.size(); ++i)
     {
-      sample(0.5 * (q[i] + q[(i + 1) & 3]));
-      sample((q[i] + q[(i + 1) & 3] + centre) / 3.0);
+      sample(0.5 * (q[i] + q[(i + 1) % q.size()]));
+      sample((q[i] + q[(i + 1) % q.size()] + centre) / 3.0);
     }
   }
   s.mean /= double(count);

@@ -23,7 +23,7 @@ namespace internal {
 
 // `q` moved rigidly so that t0 is at the origin, t1 on the +x axis and t2 in
 // the xy plane with y >= 0 (a proper motion: the signed volume is kept).
-inline Quad canonical_frame(const Quad& q)
+inline Panel canonical_frame(const Panel& q)
 {
   const Eigen::Vector3d x = (q[1] - q[0]).normalized();
   const Eigen::Vector3d z = x.cross(q[2] - q[0]).normalized();
@@ -31,15 +31,15 @@ inline Quad canonical_frame(const Quad& q)
   R.row(0) = x.transpose();
   R.row(1) = z.cross(x).transpose();
   R.row(2) = z.transpose();
-  Quad r;
-  for(int i = 0; i < 4; ++i)
-    r[i] = R * (q[i] - q[0]);
+  Panel r = q;
+  for(Eigen::Vector3d& p : r)
+    p = R * (p - q[0]);
   return r;
 }
 
 struct Cluster_congruence
 {
-  std::vector<Quad> s_quads;       // canonical frame; empty clusters get zeros
+  std::vector<Panel> s_quads;       // canonical frame; empty clusters get zeros
   std::vector<std::size_t> sizes;  // instances per cluster
   std::vector<double> errors;      // absolute lengths
   std::vector<std::size_t> mirrored; // instances whose best fit is a mirror
@@ -48,13 +48,12 @@ struct Cluster_congruence
 inline Cluster_congruence cluster_congruence(const Tilable_problem& problem, const Point_matrix& X)
 {
   const std::size_t K = problem.number_of_clusters;
-  std::vector<std::vector<Quad>> members(K);
+  std::vector<std::vector<Panel>> members(K);
   for(std::size_t f = 0; f < problem.face_corners.size(); ++f)
     members[problem.face_cluster[f]].push_back(instance(problem, X, f));
 
   Cluster_congruence result;
-  result.s_quads.assign(K, Quad{{Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(),
-                                 Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero()}});
+  result.s_quads.assign(K, Panel::zero(4));
   result.errors.assign(K, 0.0);
   result.sizes.assign(K, 0);
   result.mirrored.assign(K, 0);
@@ -63,12 +62,12 @@ inline Cluster_congruence cluster_congruence(const Tilable_problem& problem, con
     result.sizes[c] = members[c].size();
     if(members[c].empty())
       continue;
-    const Quad mean = converged_procrustes_mean(members[c], problem.allow_mirror);
+    const Panel mean = converged_procrustes_mean(members[c], problem.allow_mirror);
     result.s_quads[c] = canonical_frame(mean);
     // The mold of a planar S-quad is its own mirror image.
     const bool count_mirrored =
       problem.allow_mirror && planarity_defect(mean) > 1e-9 * (mean[2] - mean[0]).norm();
-    for(const Quad& q : members[c])
+    for(const Panel& q : members[c])
     {
       result.errors[c] = (std::max)(result.errors[c], rigid_fit_deviation(mean, q, problem.allow_mirror));
       if(count_mirrored && best_rigid_fit(mean, q, true).is_mirrored)

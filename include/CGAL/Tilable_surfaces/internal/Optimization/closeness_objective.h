@@ -56,7 +56,7 @@ std::vector<Eigen::Matrix3d> closeness_metrics(const PolygonMesh& pm, const Vert
   std::vector<int> boundary_neighbours(n, 0);
   for(auto f : faces(pm))
   {
-    const Eigen::Vector3d nf = quad_normal(f, pm, vim, points);
+    const Eigen::Vector3d nf = face_normal(f, pm, vim, points);
     if(!nf.allFinite())
       continue;
     for(auto v : CGAL::vertices_around_face(halfedge(f, pm), pm))

@@ -21,10 +21,11 @@ namespace CGAL {
 namespace Tilable_surfaces {
 namespace internal {
 
-// Unit vector area of a quad, (v2 - v0) x (v3 - v1): a normal that does not
-// depend on which diagonal would split a non-planar quad.
+// Unit vector area of a face: (v2 - v0) x (v3 - v1) for a quad, a normal
+// that does not depend on which diagonal would split a non-planar quad;
+// (v1 - v0) x (v2 - v0) for a triangle.
 template <typename PolygonMesh, typename VertexIndexMap>
-Eigen::Vector3d quad_normal(typename boost::graph_traits<PolygonMesh>::face_descriptor f,
+Eigen::Vector3d face_normal(typename boost::graph_traits<PolygonMesh>::face_descriptor f,
                             const PolygonMesh& pm, const VertexIndexMap& vim,
                             const Point_matrix& points)
 {
@@ -32,13 +33,15 @@ Eigen::Vector3d quad_normal(typename boost::graph_traits<PolygonMesh>::face_desc
   int n = 0;
   for(auto v : CGAL::vertices_around_face(halfedge(f, pm), pm))
     p[n++] = points.row(get(vim, v)).transpose();
-  return (p[2] - p[0]).cross(p[3] - p[1]).normalized();
+  const Eigen::Vector3d area = n == 3 ? Eigen::Vector3d((p[1] - p[0]).cross(p[2] - p[0]))
+                                      : Eigen::Vector3d((p[2] - p[0]).cross(p[3] - p[1]));
+  return area.normalized();
 }
 
 // Flags the vertices excluded from fairness: the ends of feature edges and
 // the corners of the boundary. Feature edges are those of
 // `edge_is_constrained_map` when the user gives one (`use_edge_map`), else
-// the edges whose dihedral angle (between the quad normals) exceeds
+// the edges whose dihedral angle (between the face normals) exceeds
 // `feature_angle_degrees`. A boundary vertex is a corner if it has at most
 // 2 incident edges, or (without a user map) if the boundary turns there by
 // more than the feature angle.
@@ -58,8 +61,8 @@ std::vector<bool> fairness_exclusions(const PolygonMesh& pm, const VertexIndexMa
     if(use_edge_map)
       feature = get(ecm, e);
     else if(!is_border_edge(h, pm))
-      feature = quad_normal(face(h, pm), pm, vim, points)
-                  .dot(quad_normal(face(opposite(h, pm), pm), pm, vim, points)) < cos_feature;
+      feature = face_normal(face(h, pm), pm, vim, points)
+                  .dot(face_normal(face(opposite(h, pm), pm), pm, vim, points)) < cos_feature;
     if(feature)
       excluded[get(vim, source(e, pm))] = excluded[get(vim, target(e, pm))] = true;
   }

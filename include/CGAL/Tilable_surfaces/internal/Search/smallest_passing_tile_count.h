@@ -15,25 +15,28 @@ namespace CGAL {
 namespace Tilable_surfaces {
 namespace internal {
 
-// The smallest K in [1, k_max] for which `passes(K)` holds, if passing is
+// The smallest K in [k_min, k_max] (k_min >= 1: a mesh of quads and
+// triangles needs 2 tiles) for which `passes(K)` holds, if passing is
 // monotone in K (more molds, closer surface): halving down from `k_first`
 // while it passes, or doubling up while it fails, then bisecting. Whatever
 // `passes` does, the K returned passed and K - 1 was tried and failed (or
-// K = 1). Returns k_max + 1 if k_max fails.
+// K = k_min). Returns k_max + 1 if k_max fails.
 template <typename Passes>
-std::size_t smallest_passing_tile_count(std::size_t k_first, std::size_t k_max, Passes passes)
+std::size_t smallest_passing_tile_count(std::size_t k_first, std::size_t k_min, std::size_t k_max,
+                                        Passes passes)
 {
-  if(k_max == 0)
-    return 1;
-  std::size_t failed = 0;          // the largest K tried that failed, 0 if none
+  k_min = (std::max)(k_min, std::size_t(1));
+  if(k_max < k_min)
+    return k_min;
+  std::size_t failed = k_min - 1;  // the largest K tried that failed, k_min - 1 if none
   std::size_t passed = k_max + 1;  // the smallest K tried that passed
-  const std::size_t first = (std::min)((std::max)(k_first, std::size_t(1)), k_max);
+  const std::size_t first = (std::min)((std::max)(k_first, k_min), k_max);
   if(passes(first))
   {
     passed = first;
-    while(passed > 1 && failed == 0)
+    while(passed > k_min && failed == k_min - 1)
     {
-      const std::size_t k = passed / 2;
+      const std::size_t k = (std::max)(passed / 2, k_min);
       if(passes(k))
         passed = k;
       else

@@ -398,7 +398,8 @@ TEST(MakeKSetTilable, SameResultWhateverTheThreadCount)
     results.push_back(points(mesh));
     predictions.emplace_back();
     for(const TS::Clustering_candidate& c : r.clustering.candidates)
-      predictions.back().push_back(c.predicted_displacement);
+      if(c.origin != TS::Clustering_candidate::GRID_SWEEPS)  // solved first, not ranked
+        predictions.back().push_back(c.predicted_displacement);
   }
   EXPECT_TRUE(results[0] == results[1]) << "bit-identical positions";
   ASSERT_GT(predictions[0].size(), 2u);

@@ -276,3 +276,52 @@ TEST(QuadShape, DescriptorIsInvariantUnderMotionAndRelabelling)
   EXPECT_LE(d[4], d[5]);
   EXPECT_NEAR(d[6], std::cbrt(6 * std::abs(TS::signed_volume(q))), 1e-15);
 }
+
+// The correspondences between two panels of n corners are the symmetries of
+// the n-gon, the dihedral group: 2n of them, of which the n rotations keep
+// the cyclic order. So: 8 and 4 for quads, 6 and 3 for triangles; and every
+// admissible one is a permutation of the corners that maps neighbours to
+// neighbours.
+TEST(QuadOrientation, AdmissibleCorrespondencesAreTheSymmetriesOfThePolygon)
+{
+  for(int n : {3, 4})
+    for(TS::Orientation_policy policy :
+        {TS::PROPER_RIGID_MOTIONS, TS::NO_TURNED_OVER_PANELS, TS::ALLOW_MIRRORED_PANELS})
+    {
+      int admissible = 0;
+      for(int index = 0; index < 8; ++index)
+      {
+        const TS::Quad_orientation o(index);
+        if(!TS::is_admissible(o, n, policy))
+          continue;
+        ++admissible;
+        std::set<int> image;
+        for(int i = 0; i < n; ++i)
+        {
+          image.insert(o(i, n));
+          const int step = (o((i + 1) % n, n) - o(i, n) + n) % n;
+          EXPECT_EQ(step, o.is_reversed() ? n - 1 : 1) << "n " << n << " orientation " << index;
+        }
+        EXPECT_EQ(int(image.size()), n);
+      }
+      EXPECT_EQ(admissible, policy == TS::NO_TURNED_OVER_PANELS ? n : 2 * n) << "n " << n;
+    }
+}
+
+// The in-place list of face edges keeps what was pushed, in order, up to
+// its bound, and is a range.
+TEST(BoundedList, KeepsValuesInOrderUpToItsBound)
+{
+  TS::internal::Bounded_list<int, 4> list;
+  EXPECT_EQ(list.size(), 0u);
+  EXPECT_EQ(list.begin(), list.end());
+  for(int x : {7, 3, 5, 9})
+    list.push_back(x);
+  EXPECT_EQ(list.size(), 4u);
+  EXPECT_EQ(std::vector<int>(list.begin(), list.end()), (std::vector<int>{7, 3, 5, 9}));
+  EXPECT_EQ(list[2], 5);
+  const TS::internal::Bounded_list<int, 4> copy = list;
+  int sum = 0;
+  for(int x : copy) sum += x;
+  EXPECT_EQ(sum, 24);
+}

@@ -20,6 +20,7 @@
 #include <CGAL/Tilable_surfaces/visitor.h>
 #include <CGAL/Tilable_surfaces/internal/Face_clustering.h>
 #include <CGAL/Tilable_surfaces/internal/canonical_face_order.h>
+#include <CGAL/Tilable_surfaces/internal/Optimization/sweep_start.h>
 #include <CGAL/Tilable_surfaces/internal/parallel_for.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -286,7 +287,13 @@ public:
   /// Looks for the tilable result closest to the input among several
   /// clusterings, then improves it; the default of `make_k_set_tilable()`.
   ///
-  /// -# The candidates of the last `cluster()` are ranked two ways: by their
+  /// -# The sweep clusterings of the pool (`Clustering_candidate::GRID_SWEEPS`)
+  ///    are solved first, each from the swept surface at which it is exact
+  ///    (user manual, section TS_Sweeps) for at most 10 iterations, the
+  ///    swept surface kept when the solve does not end exact. The best of them
+  ///    is a fallback that the final result (after the rounds below) must
+  ///    beat; it is not ranked, sets no iteration cap and starts no round.
+  /// -# The other candidates of the last `cluster()` are ranked two ways: by their
   ///    predicted displacement (`predict_displacement()`; with a parallel
   ///    `ConcurrencyTag`, one candidate per thread, with the same values), and by the spread
   ///    of the input's edge lengths that their edge-sharing graph ties
@@ -352,13 +359,34 @@ public:
     CGAL::Real_timer timer;
     timer.start();
 
-    // 1. The candidates most likely to end closest, each optimized fully.
-    const std::vector<std::size_t> ranked = ranked_candidates(np, optimized);
     const int user_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
                                                  default_number_of_iterations(CONSTRAINED_GAUSS_NEWTON));
+    // 0. The sweep clusterings, exact from their start: a tilable result
+    // within seconds whatever the size, which the final result must beat.
+    // Kept apart: it sets no iteration cap and starts no improvement round,
+    // so a result that beats it is the one found without it.
+    std::optional<State> best_sweep;
+    std::size_t best_sweep_index = 0;
+    bool stopped = false;
+    for(std::size_t i = 0; i < m_clustering.candidates.size() && !stopped; ++i)
+      if(m_clustering.candidates[i].origin == Clustering_candidate::GRID_SWEEPS)
+      {
+        timer.reset();
+        State solved = solved_candidate(i, np.number_of_iterations((std::min)(user_iterations, sweep_polish_iterations)));
+        stopped = solved.optimization.stopped_by_visitor;
+        if(!best_sweep || internal::is_better(solved.optimization, best_sweep->optimization))
+        {
+          best_sweep = std::move(solved);
+          best_sweep_index = i;
+        }
+        visitor.phase("sweep candidate", timer.time());
+      }
+
+    // 1. The candidates most likely to end closest, each optimized fully.
+    timer.reset();
+    const std::vector<std::size_t> ranked = stopped ? std::vector<std::size_t>() : ranked_candidates(np, optimized);
     visitor.phase("displacement prediction", timer.time());
     State best;
-    bool stopped = false;
     Solved_ahead ahead;
     for(std::size_t r = 0; r < ranked.size() && !stopped; ++r)
     {
@@ -375,6 +403,12 @@ public:
         m_clustering.chosen_candidate = ranked[r];
       }
       visitor.phase("candidate optimization", timer.time());
+    }
+    if(ranked.empty() && best_sweep) // the visitor stopped a sweep's solve
+    {
+      best = std::move(*best_sweep);
+      best_sweep.reset();
+      m_clustering.chosen_candidate = best_sweep_index;
     }
     set_state(best);
 
@@ -408,7 +442,16 @@ public:
       if(round_stopped)
         break;
     }
-    m_clustering.choice_reason = "closest result among the " + std::to_string(ranked.size()) +
+
+    // 3. The sweep, if the result did not beat it.
+    const bool sweep_chosen = ranked.empty() || (best_sweep && internal::is_better(best_sweep->optimization, best.optimization));
+    if(best_sweep && sweep_chosen)
+    {
+      set_state(*best_sweep);
+      m_clustering.chosen_candidate = best_sweep_index;
+    }
+    m_clustering.choice_reason = std::string(sweep_chosen ? "a sweep clustering, better than " : "closest result among ") +
+      "the " + std::to_string(ranked.size()) +
       " candidates of smallest predicted displacement or length spread, or first segment clusterings, then " +
       std::to_string(rounds_done) + " improvement or repair rounds; " + m_clustering.choice_reason;
     return m_optimization;
@@ -582,6 +625,12 @@ private:
       put(m_vpm, v, points[get(m_vim, v)]);
   }
 
+  // The iterations of a sweep candidate's solve from its exact start, kept
+  // only if it ends exact. Few: a solve that leaves the exact surfaces comes
+  // back to them slowly (seashell parametrization, K = 100: 1.2e-6 after 30
+  // iterations at 1k quads, 5e-6 after 300 at 10k, 1 s each there).
+  static constexpr int sweep_polish_iterations = 10;
+
   // Three times the iterations the best result took, at least 30, at most
   // the user's limit.
   static int iteration_cap(const State& best, int user_iterations)
@@ -658,12 +707,36 @@ private:
     State solved;
     std::size_t unused_dof;
     solved.clustering = candidate_model(i, unused_dof);
+    internal::Point_matrix start;
+    if(m_clustering.candidates[i].origin == Clustering_candidate::GRID_SWEEPS)
+      start = swept_start(solved.clustering);
     Model_maps maps(solved.clustering);
     solved.points = m_input_points;
     const Point_storage_map points(solved.points.begin(), m_vim);
     solved.optimization = internal::optimize_tilable_surface(internal::Validated_mesh(true), m_mesh,
-                                                             with_model_maps(np, points, maps));
+                                                             with_model_maps(np, points, maps),
+                                                             start.rows() > 0 ? &start : nullptr);
     return solved;
+  }
+
+  // The positions at which the sweep clustering `model` is exact
+  // (sweep_start()), with its orientations re-tagged there: the ones chosen
+  // on the input for flexibility need not be those of the sweep, and on the
+  // exact shapes the best match is. Empty when there is none.
+  internal::Point_matrix swept_start(internal::Face_clustering& model) const
+  {
+    const internal::Point_matrix start =
+      internal::sweep_start(m_mesh, m_fim, m_vim, input_point_map(),
+                            internal::read_points(m_mesh, input_point_map(), m_vim), model.label);
+    if(start.rows() == 0)
+      return start;
+    std::vector<Point> points(m_input_points.size());
+    for(std::size_t v = 0; v < points.size(); ++v)
+      points[v] = Point(start(Eigen::Index(v), 0), start(Eigen::Index(v), 1), start(Eigen::Index(v), 2));
+    const std::vector<Panel> panels =
+      internal::face_quads(m_mesh, m_fim, parameters::vertex_point_map(Point_storage_map(points.begin(), m_vim)));
+    model.orientation = internal::cluster_shapes(panels, model.label, model.number_of_clusters, m_policy).orientation;
+    return start;
   }
 
   // Rounds of optimize_closest() beyond the user's that repair a result that
@@ -761,6 +834,8 @@ private:
     for(std::size_t i = 0; i < m_clustering.candidates.size(); ++i)
     {
       const Clustering_candidate& candidate = m_clustering.candidates[i];
+      if(candidate.origin == Clustering_candidate::GRID_SWEEPS)
+        continue;
       by_prediction.push_back({candidate.predicted_displacement, i});
       by_spread.push_back({candidate.length_deviation, i});
     }
@@ -846,6 +921,8 @@ private:
     std::vector<Clustering_candidate>& pool = m_clustering.candidates;
     with_concurrency([&] {
       internal::parallel_for(pool.size(), [&](std::size_t i) {
+        if(pool[i].origin == Clustering_candidate::GRID_SWEEPS)
+          return;
         std::size_t unused_dof;
         pool[i].predicted_displacement = predicted_displacement(candidate_model(i, unused_dof), np);
       });

@@ -50,7 +50,12 @@ namespace Tilable_surfaces {
 struct Clustering_candidate
 {
   /// Where the configuration comes from.
-  enum Origin { HIERARCHICAL, KMEANS, QUAD_STRIPS, GRID_SEGMENTS };
+  /// `GRID_SWEEPS`: every column of a run of rows of a quad grid is one
+  /// cluster; such a clustering is exact on a swept surface built directly
+  /// (user manual, section TS_Sweeps). These are never the configuration
+  /// `cluster_quads()` returns; `K_set_tilable_surface::optimize_closest()`
+  /// solves them first, from that surface.
+  enum Origin { HIERARCHICAL, KMEANS, QUAD_STRIPS, GRID_SEGMENTS, GRID_SWEEPS };
   Origin origin = HIERARCHICAL;  ///< the search that produced it
   /// Its weight, in the units of the clustering path (see `Clustering_result::path`):
   /// sum of pairwise dissimilarities on the exact path, sum of pairwise squared
@@ -65,7 +70,8 @@ struct Clustering_candidate
   /// The selection score (lower is better); see `cluster_quads()`.
   double score = 0;
   /// Its predicted displacement (`Displacement_prediction::max`) once
-  /// `K_set_tilable_surface::optimize_closest()` ranked it; else 0.
+  /// `K_set_tilable_surface::optimize_closest()` ranked it; else 0 (always
+  /// for `GRID_SWEEPS`, which are not ranked).
   double predicted_displacement = 0;
   /// The cluster of every face (by face index), 0..K-1 numbered by first
   /// face in the canonical face order (see `cluster_quads()`);
@@ -105,7 +111,8 @@ struct Clustering_result
   /// the threshold until N is at most max(1000, 4K)).
   double initial_threshold = 0;
   /// The final candidate pool: the beam, best score first, then the k-means
-  /// configuration if it was asked for and has K non-empty clusters.
+  /// configuration if it was asked for and has K non-empty clusters, the
+  /// quad-strip, grid-segment and sweep clusterings (`Clustering_candidate::Origin`).
   std::vector<Clustering_candidate> candidates;
   /// Index in `candidates` of the returned configuration.
   std::size_t chosen_candidate = 0;
@@ -302,6 +309,9 @@ public:
       for(const std::vector<std::size_t>& label :
           segment_clusterings(m_pm, m_fim, m_vpm, m_k, m_settings.policy))
         add_best_match_candidate(result, label, Clustering_candidate::GRID_SEGMENTS);
+    if(m_settings.use_segments && !m_triangles)
+      for(const std::vector<std::size_t>& label : sweep_clusterings(m_pm, m_fim, m_vpm, m_k, m_settings.policy))
+        add_best_match_candidate(result, label, Clustering_candidate::GRID_SWEEPS);
   }
 
   // 4. The candidate of lowest score, its S-quads and orientations.
@@ -472,7 +482,8 @@ private:
   void choose(Clustering_result& result) const
   {
     for(std::size_t i = 1; i < result.candidates.size(); ++i)
-      if(result.candidates[i].score < result.candidates[result.chosen_candidate].score)
+      if(result.candidates[i].origin != Clustering_candidate::GRID_SWEEPS &&
+         result.candidates[i].score < result.candidates[result.chosen_candidate].score)
         result.chosen_candidate = i;
     const Clustering_candidate& chosen = result.candidates[result.chosen_candidate];
     const std::size_t d0 = m_score.initial_dof;

@@ -129,7 +129,8 @@ K_set_tilable_result search_tile_count(PolygonMesh& pm, Surface& surface, Vertex
     }
     return meets;
   };
-  smallest_passing_tile_count((std::max)(std::size_t(2), n / 25), number_of_face_kinds(pm), k_max, passes);
+  smallest_passing_tile_count((std::max)(std::size_t(2), n / 25), number_of_panel_kinds(face_quads(pm, fim, np)),
+                              k_max, passes);
 
   auto point = kept_points.begin();
   for(auto v : vertices(pm)) put(vpm, v, *point++);

@@ -153,9 +153,14 @@ struct Optimization_setup
   Solver_input input() const { return Solver_input{problem, D, X0, fixed, metric}; }
 };
 
-// optimize_tilable_surface() on a mesh validate_quad_mesh() accepted.
+// optimize_tilable_surface() on a mesh validate_quad_mesh() accepted. With
+// `start` (positions by vertex index, in mesh units) at which the clustering
+// is exact, the default solver starts there instead of at the input, and the
+// start is the result if the solve ends short of the tolerance; a start
+// that is not exact is ignored.
 template <class PolygonMesh, typename NamedParameters>
-Optimization_result optimize_tilable_surface(Validated_mesh, PolygonMesh& pm, const NamedParameters& np)
+Optimization_result optimize_tilable_surface(Validated_mesh, PolygonMesh& pm, const NamedParameters& np,
+                                             const Point_matrix* start = nullptr)
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
@@ -176,36 +181,63 @@ Optimization_result optimize_tilable_surface(Validated_mesh, PolygonMesh& pm, co
   result.setup_time = timer.time();
 
   timer.reset();
+  Solver_input input = setup.input();
+  Point_matrix S;
+  if(start != nullptr && setup.solver == CONSTRAINED_GAUSS_NEWTON && !problem.planar)
+  {
+    S = (start->rowwise() - setup.centre) / scale;
+    for(Eigen::Index i = 0; i < S.rows(); ++i)
+      if(fixed[std::size_t(i)])
+        S.row(i) = X0.row(i);
+    if(congruence_error(problem, S) <= settings.congruence_tolerance)
+      input.start = &S;
+  }
   auto&& visitor = visitor_of(np);
   Point_matrix X;
   const Solver_report report =
     setup.solver == CONSTRAINED_GAUSS_NEWTON
-      ? constrained_gauss_newton(setup.input(), settings, X, visitor)
-      : polak_ribiere(setup.input(), settings, X, visitor);
+      ? constrained_gauss_newton(input, settings, X, visitor)
+      : polak_ribiere(input, settings, X, visitor);
   result.iterations = report.iterations;
   result.stopped_by_visitor = report.stopped_by_visitor;
   result.objective = report.objective;
   result.energy = paper_energy(problem, setup.D, X, X0);
 
+  auto moved_points = [&](const Point_matrix& Y) {
+    Point_matrix moved = problem.points;
+    for(std::size_t i = 0; i < fixed.size(); ++i)
+      if(!fixed[i])
+        moved.row(Eigen::Index(i)) += scale * (Y.row(Eigen::Index(i)) - X0.row(Eigen::Index(i)));
+    return moved;
+  };
+  result.solve_time = timer.time();
+
+  timer.reset();
+  auto measured = [&](const Point_matrix& Y) {
+    result.measure = measure_tilability(problem, setup.D, problem.points, moved_points(Y));
+    result.converged = result.measure.congruence_error <= settings.congruence_tolerance &&
+                       (!problem.planar || result.measure.planarity_error <= settings.congruence_tolerance);
+  };
+  measured(X);
+  if(input.start != nullptr && !result.converged)
+  {
+    X = S;
+    result.energy = paper_energy(problem, setup.D, X, X0);
+    measured(X);
+  }
+  result.measure_time = timer.time();
+
   VertexPointMap vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
                                         get_property_map(CGAL::vertex_point, pm));
-  Point_matrix moved = problem.points;
   for(vertex_descriptor v : vertices(pm))
   {
     const std::size_t i = get(vim, v);
     const Eigen::RowVector3d displacement = X.row(i) - X0.row(i);
     if(fixed[i] || displacement.isZero(0))
       continue;
-    moved.row(i) += scale * displacement;
-    put(vpm, v, Point(moved(i, 0), moved(i, 1), moved(i, 2)));
+    const Eigen::RowVector3d p = problem.points.row(i) + scale * displacement;
+    put(vpm, v, Point(p(0), p(1), p(2)));
   }
-  result.solve_time = timer.time();
-
-  timer.reset();
-  result.measure = measure_tilability(problem, setup.D, problem.points, moved);
-  result.converged = result.measure.congruence_error <= settings.congruence_tolerance &&
-                     (!problem.planar || result.measure.planarity_error <= settings.congruence_tolerance);
-  result.measure_time = timer.time();
   return result;
 }
 

@@ -114,6 +114,16 @@ public:
     return c / double(m_size);
   }
 
+  /// Twice the vector area: (t2 - t0) x (t3 - t1) for a quad, which does not
+  /// depend on the diagonal that would split a non-planar quad, and
+  /// (t1 - t0) x (t2 - t0) for a triangle.
+  Eigen::Vector3d doubled_vector_area() const
+  {
+    const std::array<Eigen::Vector3d, 4>& t = m_corners;
+    return is_triangle() ? Eigen::Vector3d((t[1] - t[0]).cross(t[2] - t[0]))
+                         : Eigen::Vector3d((t[2] - t[0]).cross(t[3] - t[1]));
+  }
+
 private:
   std::array<Eigen::Vector3d, 4> m_corners;
   int m_size;

@@ -163,17 +163,6 @@ int face_corner_count(typename boost::graph_traits<PolygonMesh>::face_descriptor
   return int(face_edge_halfedges(f, pm).size());
 }
 
-// The number of kinds of faces of a mesh validate_quad_mesh() accepted: 1,
-// or 2 with quads and triangles (the smallest possible K).
-template <typename PolygonMesh>
-std::size_t number_of_face_kinds(const PolygonMesh& pm)
-{
-  bool kind[5] = {false, false, false, false, false};
-  for(auto f : faces(pm))
-    kind[face_corner_count(f, pm)] = true;
-  return std::size_t(kind[3]) + std::size_t(kind[4]);
-}
-
 // Checks the cluster `c` and orientation `o` of face `fi`, of `corners`
 // corners, against K clusters (K unknown: the largest size_t) and the
 // orientations of its kind.
@@ -340,9 +329,7 @@ void validate_quad_mesh(const PolygonMesh& pm,
       if(!((q[int((k + 1) % n)] - q[int(k)]).norm() > min_length))
         fail("has a zero-length edge between vertices " + std::to_string(ids[k]) +
              " and " + std::to_string(ids[(k + 1) % n]));
-    const Eigen::Vector3d vector_area = n == 4 ? Eigen::Vector3d((q[2] - q[0]).cross(q[3] - q[1]))
-                                               : Eigen::Vector3d((q[1] - q[0]).cross(q[2] - q[0]));
-    if(!(0.5 * vector_area.norm() > min_area))
+    if(!(0.5 * q.doubled_vector_area().norm() > min_area))
       fail("is collapsed: its area is zero");
   }
 }

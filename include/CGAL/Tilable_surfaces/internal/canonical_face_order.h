@@ -60,9 +60,7 @@ std::vector<std::size_t> canonical_face_ranks(const PolygonMesh& pm, FaceIndexMa
   for(std::size_t i = 0; i < n; ++i)
   {
     distance[i] = (centroid[i] - middle).squaredNorm();
-    const Panel& q = quads[i];
-    area[i] = q.is_triangle() ? ((q[1] - q[0]).cross(q[2] - q[0])).norm()
-                              : ((q[2] - q[0]).cross(q[3] - q[1])).norm();
+    area[i] = quads[i].doubled_vector_area().norm();
   }
   auto near = [](double a, double b) { return std::abs(a - b) <= 1e-9 * (std::max)(a, b); };
   // Start candidates, farthest first: a start is the first unranked one after

@@ -27,7 +27,8 @@ inline bool has_triangles(const std::vector<Panel>& panels)
   return false;
 }
 
-// The number of kinds among `panels`: 1, or 2 with quads and triangles.
+// The number of kinds among `panels`: 1, or 2 with quads and triangles (the
+// smallest possible K).
 inline std::size_t number_of_panel_kinds(const std::vector<Panel>& panels)
 {
   bool quads = false, triangles = false;

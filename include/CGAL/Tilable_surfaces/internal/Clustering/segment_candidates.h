@@ -51,6 +51,8 @@ struct Quad_grid
   std::size_t rows = 0, columns = 0;
   std::vector<std::size_t> face_at;
   std::vector<Panel> corners;  // per face; corners 3 and 0 on its edge towards the next column
+  // Per face, corner i is the target of next^(corner_offset + i)(halfedge(f)).
+  std::vector<int> corner_offset;
 };
 
 // The faces of the strip through `f` that enters and leaves `f` through
@@ -137,6 +139,7 @@ Quad_grid quad_grid(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
     return false;
   };
   std::vector<Panel> corners(n);
+  std::vector<int> corner_offset(n, 0);
   for(std::size_t r = 0; r < rows; ++r)
     for(std::size_t c = 0; c < columns; ++c)
     {
@@ -148,6 +151,8 @@ Quad_grid quad_grid(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
           return grid;
         h = next(next(h, pm), pm);
       }
+      for(halfedge_descriptor g = halfedge(face_of[f], pm); g != h; g = next(g, pm))
+        ++corner_offset[f];
       for(int i = 0; i < 4; ++i, h = next(h, pm))
         corners[f][i] = to_eigen(get(vpm, target(h, pm)));
     }
@@ -155,6 +160,7 @@ Quad_grid quad_grid(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
   grid.columns = columns;
   grid.face_at.swap(face_at);
   grid.corners.swap(corners);
+  grid.corner_offset.swap(corner_offset);
   return grid;
 }
 
@@ -441,6 +447,95 @@ segment_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
       if(!label.empty() && std::find(result.begin(), result.end(), label) == result.end())
         result.push_back(label);
     }
+  }
+  return result;
+}
+
+// Whether the last row of `grid` meets the first (a torus): no sweep closes
+// up on itself.
+inline bool closed_across_rows(const Quad_grid& grid)
+{
+  if(grid.rows < 3)
+    return false;
+  const Panel& first = grid.corners[grid.face_at[0]];
+  const Panel& last = grid.corners[grid.face_at[(grid.rows - 1) * grid.columns]];
+  for(const Eigen::Vector3d& p : first)
+    for(const Eigen::Vector3d& q : last)
+      if(p == q)
+        return true;
+  return false;
+}
+
+// Sweep clusterings with k clusters: the rows cut into the k / columns runs
+// of least spread, every column of a run one mold, and the k mod columns
+// molds left split the columns of the longest run in two at its middle row.
+// Each is exact at a swept surface built directly (sweep_start.h), which the
+// segments of several groups above are not: it freezes the section's size
+// and shape, and keeps its bends and twists. One per grid direction; none
+// when a row has more than k quads, the grid is closed both ways or the
+// leftover molds cannot be placed.
+template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
+std::vector<std::vector<std::size_t> >
+sweep_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, std::size_t k,
+                  Orientation_policy policy)
+{
+  std::vector<std::vector<std::size_t> > result;
+  const std::array<std::vector<std::size_t>, 2> strips = quad_strips(pm, fim);
+  for(int row_direction = 0; row_direction < 2; ++row_direction)
+  {
+    const Quad_grid grid = quad_grid(pm, fim, vpm, strips, row_direction);
+    const std::size_t rows = grid.rows, columns = grid.columns;
+    if(rows == 0 || columns > k || closed_across_rows(grid))
+      continue;
+    const std::size_t runs = (std::min)(rows, k / columns), left = k - runs * columns;
+    if(double(rows) * double(rows) * double(runs) > 1e8)
+      continue;
+    std::vector<std::size_t> all_columns(columns);
+    std::iota(all_columns.begin(), all_columns.end(), std::size_t(0));
+    const Run_option option = run_option(grid, all_columns, columns, policy);
+    // cost[s * (rows + 1) + b]: rows [0, b) in s runs; start of the last.
+    const double infinity = (std::numeric_limits<double>::max)();
+    std::vector<double> cost((runs + 1) * (rows + 1), infinity);
+    std::vector<std::size_t> start(cost.size(), 0);
+    cost[0] = 0;
+    for(std::size_t s = 1; s <= runs; ++s)
+      for(std::size_t b = s; b <= rows; ++b)
+        for(std::size_t a = s - 1; a < b; ++a)
+        {
+          const double before = cost[(s - 1) * (rows + 1) + a];
+          if(before == infinity)
+            continue;
+          const double c = before + option.cost(a, b);
+          if(c < cost[s * (rows + 1) + b])
+          {
+            cost[s * (rows + 1) + b] = c;
+            start[s * (rows + 1) + b] = a;
+          }
+        }
+    std::vector<std::size_t> first_row(runs + 1, rows);
+    for(std::size_t s = runs; s > 0; --s)
+      first_row[s - 1] = start[s * (rows + 1) + first_row[s]];
+    std::size_t longest = 0;
+    for(std::size_t s = 1; s < runs; ++s)
+      if(first_row[s + 1] - first_row[s] > first_row[longest + 1] - first_row[longest])
+        longest = s;
+    const std::size_t length = first_row[longest + 1] - first_row[longest];
+    if(left > 0 && length < 2)
+      continue;
+    std::vector<std::size_t> label(grid.face_at.size());
+    for(std::size_t s = 0; s < runs; ++s)
+      for(std::size_t r = first_row[s]; r < first_row[s + 1]; ++r)
+        for(std::size_t c = 0; c < columns; ++c)
+          label[grid.face_at[r * columns + c]] = s * columns + c;
+    // The leftover molds: columns spread evenly over the row.
+    for(std::size_t t = 0; t < left; ++t)
+    {
+      const std::size_t c = t * columns / left;
+      for(std::size_t r = first_row[longest] + length / 2; r < first_row[longest + 1]; ++r)
+        label[grid.face_at[r * columns + c]] = runs * columns + t;
+    }
+    relabel_by_first_face(label);
+    result.push_back(label);
   }
   return result;
 }

@@ -35,6 +35,9 @@ struct Solver_input
   const Point_matrix& X0;               // normalized input positions
   const std::vector<bool>& fixed;       // vertices that must not move
   const std::vector<Eigen::Matrix3d>& metric; // closeness metric per vertex (closeness_objective.h)
+  // Where the default solver starts, normalized like X0; X0 when null. The
+  // closeness is still measured to X0.
+  const Point_matrix* start = nullptr;
 };
 
 struct Solver_report

@@ -156,11 +156,15 @@ public:
 
   Solver_report run()
   {
-    m_X = m_in.X0;
+    m_d = Eigen::VectorXd::Zero(m_n);
+    if(m_in.start != nullptr)
+      for(int v = 0; v < int(m_variable.size()); ++v)
+        if(m_variable[v] >= 0)
+          m_d.segment<3>(m_variable[v]) = (m_in.start->row(v) - m_in.X0.row(v)).transpose();
+    m_X = positions(m_d);
     m_report.congruence_error = congruence_error(m_in.problem, m_X);
     if(m_n == 0 || m_constraints.number_of_rows() == 0)
       return m_report;
-    m_d = Eigen::VectorXd::Zero(m_n);
     m_constraints.evaluate(m_X, m_variable, m_n, m_c, nullptr);
     m_stopped = false;
     if(sqp_phase() || projection_phase())

@@ -14,6 +14,7 @@
 #include <CGAL/boost/graph/iterator.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <vector>
 
@@ -21,21 +22,18 @@ namespace CGAL {
 namespace Tilable_surfaces {
 namespace internal {
 
-// Unit vector area of a face: (v2 - v0) x (v3 - v1) for a quad, a normal
-// that does not depend on which diagonal would split a non-planar quad;
-// (v1 - v0) x (v2 - v0) for a triangle.
+// Unit vector area of a face (Panel::doubled_vector_area()).
 template <typename PolygonMesh, typename VertexIndexMap>
 Eigen::Vector3d face_normal(typename boost::graph_traits<PolygonMesh>::face_descriptor f,
                             const PolygonMesh& pm, const VertexIndexMap& vim,
                             const Point_matrix& points)
 {
-  Eigen::Vector3d p[4];
+  std::array<Eigen::Vector3d, 4> p;
   int n = 0;
   for(auto v : CGAL::vertices_around_face(halfedge(f, pm), pm))
-    p[n++] = points.row(get(vim, v)).transpose();
-  const Eigen::Vector3d area = n == 3 ? Eigen::Vector3d((p[1] - p[0]).cross(p[2] - p[0]))
-                                      : Eigen::Vector3d((p[2] - p[0]).cross(p[3] - p[1]));
-  return area.normalized();
+    p[std::size_t(n++)] = points.row(get(vim, v)).transpose();
+  const Panel face = n == 3 ? Panel(p[0], p[1], p[2]) : Panel(p);
+  return face.doubled_vector_area().normalized();
 }
 
 // Flags the vertices excluded from fairness: the ends of feature edges and

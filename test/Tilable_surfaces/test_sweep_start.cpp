@@ -1,0 +1,172 @@
+// Sweep clusterings of quad grids and their exact start
+// (internal/Clustering/segment_candidates.h, internal/Optimization/sweep_start.h):
+// every cluster in one column of a run of rows, exact on a swept surface
+// built directly, which make_k_set_tilable() falls back to.
+
+#include "congruence_check.h"
+#include "optimization_test_helpers.h"
+#include "tube_mesh.h"
+
+#include <CGAL/Tilable_surfaces/internal/Optimization/sweep_start.h>
+#include <CGAL/Tilable_surfaces/make_k_set_tilable.h>
+
+#include <gtest/gtest.h>
+
+#include <Eigen/Geometry>
+
+#include <set>
+#include <vector>
+
+using namespace test_helpers;
+namespace TSI = CGAL::Tilable_surfaces::internal;
+
+namespace {
+
+const int rings = 9, around = 8;
+
+// A bent tube whose section grows by 60% and moves off-centre: no two
+// rings are congruent, so no column clustering is exact at the input.
+Mesh growing_horn()
+{
+  return horn<Mesh>(rings, around, 3.0, 2.0, [](int i) { return 1.0 + 0.075 * i; });
+}
+
+std::vector<std::vector<std::size_t> > sweeps(const Mesh& m, std::size_t k)
+{
+  return TSI::sweep_clusterings(m, get(CGAL::face_index, m), get(CGAL::vertex_point, m), k,
+                                TS::PROPER_RIGID_MOTIONS);
+}
+
+TSI::Point_matrix start_of(const Mesh& m, const std::vector<std::size_t>& label)
+{
+  return TSI::sweep_start(m, get(CGAL::face_index, m), get(CGAL::vertex_index, m), get(CGAL::vertex_point, m),
+                          TSI::read_points(m, get(CGAL::vertex_point, m), get(CGAL::vertex_index, m)), label);
+}
+
+// The largest distance between ring i of `points` (vertex index
+// i * around + j, tube_mesh.h) fitted rigidly onto ring 0, and ring i.
+double ring_spread(const TSI::Point_matrix& points)
+{
+  auto ring = [&](int i) { return Eigen::Matrix3Xd(points.middleRows(i * around, around).transpose()); };
+  double worst = 0;
+  for(int i = 1; i <= rings; ++i)
+  {
+    const Eigen::Matrix4d t = Eigen::umeyama(ring(0), ring(i), false);
+    const Eigen::Matrix3Xd fitted = (t.topLeftCorner<3, 3>() * ring(0)).colwise() + t.topRightCorner<3, 1>();
+    worst = (std::max)(worst, (fitted - ring(i)).colwise().norm().maxCoeff());
+  }
+  return worst;
+}
+
+} // namespace
+
+// With K = 8 molds on rings of 8 quads, the one sweep is the columns: face
+// (i, j) in cluster j (numbered by first face). The other grid direction
+// has rows of 9 quads, more than K.
+TEST(SweepStart, EightMoldsAreTheEightColumns)
+{
+  const Mesh m = growing_horn();
+  const std::vector<std::vector<std::size_t> > labels = sweeps(m, 8);
+  ASSERT_EQ(labels.size(), 1u);
+  for(int f = 0; f < rings * around; ++f)
+    EXPECT_EQ(labels[0][std::size_t(f)], std::size_t(f % around)) << "face " << f;
+}
+
+// With 19 = 2 x 8 + 3 molds: two runs of whole rows, 3 of the 16 column
+// pieces split in two; every cluster lies in one column and in consecutive
+// rows.
+TEST(SweepStart, LeftoverMoldsSplitColumns)
+{
+  const Mesh m = growing_horn();
+  const std::vector<std::vector<std::size_t> > labels = sweeps(m, 19);
+  ASSERT_EQ(labels.size(), 1u);
+  const std::vector<std::size_t>& l = labels[0];
+  EXPECT_EQ(std::set<std::size_t>(l.begin(), l.end()).size(), 19u);
+  std::vector<std::set<int> > columns(19), rows_of(19);
+  for(int f = 0; f < rings * around; ++f)
+  {
+    columns[l[std::size_t(f)]].insert(f % around);
+    rows_of[l[std::size_t(f)]].insert(f / around);
+  }
+  for(std::size_t c = 0; c < 19; ++c)
+  {
+    EXPECT_EQ(columns[c].size(), 1u) << "cluster " << c;
+    EXPECT_EQ(int(rows_of[c].size()), *rows_of[c].rbegin() - *rows_of[c].begin() + 1) << "cluster " << c;
+  }
+}
+
+// The start is a sweep of one section: every ring is congruent to the first
+// (Umeyama, no scale), the input's are not (the section grows); and every
+// cluster's instances are congruent there, checked independently.
+TEST(SweepStart, StartIsOneSectionSweptAndExact)
+{
+  Mesh m = growing_horn();
+  EXPECT_GT(ring_spread(TSI::read_points(m, get(CGAL::vertex_point, m), get(CGAL::vertex_index, m))), 0.1);
+  for(std::size_t k : {8u, 19u})
+  {
+    const std::vector<std::size_t> label = sweeps(m, k).at(0);
+    const TSI::Point_matrix start = start_of(m, label);
+    ASSERT_EQ(start.rows(), rings * around + around);
+    EXPECT_LE(ring_spread(start), 1e-12);
+    Mesh moved = m;
+    for(Vertex v : vertices(moved))
+      moved.point(v) = Point(start(int(v), 0), start(int(v), 1), start(int(v), 2));
+    Clustering c = add_clustering_maps(moved);
+    for(Face f : faces(moved))
+      c.cluster[f] = int(label[std::size_t(f)]);  // corners in the same order on every face: orientation 0
+    EXPECT_LE(congruence_by_umeyama(moved, c.cluster, c.orientation), 1e-12) << "K = " << k;
+  }
+}
+
+// A cluster across two columns, or a grid closed both ways, has no sweep.
+TEST(SweepStart, NoneWhenAClusterCrossesColumnsOrTheGridCloses)
+{
+  const Mesh m = growing_horn();
+  std::vector<std::size_t> label = sweeps(m, 8).at(0);
+  label[1] = label[0];  // face (0, 1) joins column 0
+  EXPECT_EQ(start_of(m, label).rows(), 0);
+
+  // A torus of 6 x 8 quads: the rows meet again.
+  Mesh torus;
+  std::vector<Vertex> v;
+  for(int i = 0; i < 6; ++i)
+    for(int j = 0; j < 8; ++j)
+    {
+      const double t = 2 * CGAL_PI * i / 6, a = 2 * CGAL_PI * j / 8, out = 3 + std::cos(a);
+      v.push_back(torus.add_vertex(Point(out * std::cos(t), out * std::sin(t), std::sin(a))));
+    }
+  for(int i = 0; i < 6; ++i)
+    for(int j = 0; j < 8; ++j)
+      torus.add_face(v[i * 8 + j], v[i * 8 + (j + 1) % 8], v[((i + 1) % 6) * 8 + (j + 1) % 8],
+                     v[((i + 1) % 6) * 8 + j]);
+  EXPECT_TRUE(sweeps(torus, 8).empty());
+  std::vector<std::size_t> columns(48);
+  for(std::size_t f = 0; f < 48; ++f) columns[f] = f % 8;
+  EXPECT_EQ(start_of(torus, columns).rows(), 0);
+}
+
+// make_k_set_tilable() at K = 8 on the growing horn ends tilable, checked
+// independently. With no solver iteration at all, only the sweep is exact
+// (the input is not: its rings grow), so the result is the swept surface;
+// without the sweeps it is the input, not tilable.
+TEST(SweepStart, PipelineEndsTilableEvenWithoutIterations)
+{
+  for(int iterations : {300, 0})
+  {
+    Mesh m = growing_horn();
+    Clustering c = add_clustering_maps(m);
+    const TS::K_set_tilable_result r = TS::make_k_set_tilable(
+      m, TS::parameters::number_of_tiles(8).number_of_iterations(iterations)
+           .face_cluster_map(c.cluster).face_orientation_map(c.orientation));
+    EXPECT_TRUE(r.is_tilable()) << iterations << " iterations";
+    EXPECT_LE(congruence_by_umeyama(m, c.cluster, c.orientation), 1e-6) << iterations << " iterations";
+    if(iterations > 0)
+      continue;
+    EXPECT_EQ(r.clustering.candidates[r.clustering.chosen_candidate].origin, TS::Clustering_candidate::GRID_SWEEPS);
+    EXPECT_LE(ring_spread(TSI::read_points(m, get(CGAL::vertex_point, m), get(CGAL::vertex_index, m))), 1e-9);
+
+    Mesh without = growing_horn();
+    EXPECT_FALSE(TS::make_k_set_tilable(without, TS::parameters::number_of_tiles(8).number_of_iterations(0)
+                                                   .use_segment_candidates(false)).is_tilable());
+  }
+}

@@ -410,8 +410,8 @@ TEST(MakeKSetTilable, SameResultWhateverTheThreadCount)
 
 namespace {
 
-// Stops the solver at its first iteration; the copies the pipeline makes
-// share the count.
+// Stops the solver at its start (iteration 0); the copies the pipeline
+// makes share the count.
 struct Stop_at_once_visitor : TS::Default_visitor
 {
   int* iterations;
@@ -426,16 +426,24 @@ struct Stop_at_once_visitor : TS::Default_visitor
 
 // A visitor that stops the solver stops the whole search: no further
 // candidate clustering or improvement round is optimized (without this, each
-// of the candidates and rounds would call it again).
+// of the candidates and rounds would call it again). The De Beers stand-in
+// is a grid with a sweep at K = 30, solved first: stopped before any step,
+// the result is the swept surface, exact, checked independently.
 TEST(MakeKSetTilable, VisitorThatStopsEndsTheSearch)
 {
   Mesh mesh = read("de_beers_ginza.off");
+  auto cluster = mesh.add_property_map<Mesh::Face_index, int>("f:c", -1).first;
+  auto orientation = mesh.add_property_map<Mesh::Face_index, int>("f:o", -1).first;
   int iterations = 0;
-  const TS::K_set_tilable_result r =
-    TS::make_k_set_tilable(mesh, TSP::number_of_tiles(30).visitor(Stop_at_once_visitor{{}, &iterations}));
+  const TS::K_set_tilable_result r = TS::make_k_set_tilable(
+    mesh, TSP::number_of_tiles(30).face_cluster_map(cluster).face_orientation_map(orientation)
+            .visitor(Stop_at_once_visitor{{}, &iterations}));
   EXPECT_EQ(iterations, 1);
   EXPECT_TRUE(r.optimization.stopped_by_visitor);
-  EXPECT_EQ(r.optimization.iterations, 1);
+  EXPECT_EQ(r.optimization.iterations, 0);
+  EXPECT_EQ(r.clustering.candidates[r.clustering.chosen_candidate].origin, TS::Clustering_candidate::GRID_SWEEPS);
+  EXPECT_TRUE(r.is_tilable());
+  EXPECT_LE(congruence_by_umeyama(mesh, cluster, orientation), 1e-6);
 }
 
 #ifdef CGAL_LINKED_WITH_TBB

@@ -50,13 +50,15 @@ bool all_finite(const Mesh& mesh)
   return true;
 }
 
-// Counts the iterations and stops after `stop_after`.
+// Counts the calls, checks that they number the iterations from 0 (the
+// start), and stops after `stop_after`.
 struct Counting_visitor : TS::Default_visitor
 {
   int* calls;
   int stop_after;
-  bool iteration(int, double congruence, double objective)
+  bool iteration(int iteration, double congruence, double objective)
   {
+    EXPECT_EQ(iteration, *calls);
     EXPECT_TRUE(std::isfinite(congruence) && std::isfinite(objective));
     return ++*calls < stop_after;
   }
@@ -177,8 +179,21 @@ TEST(Optimize, VisitorStopsEarly)
   visitor.stop_after = 2;
   const TS::Optimization_result r = TS::optimize_tilable_surface(
     mesh, clustering_parameters(c, TS::parameters::visitor(visitor)));
-  EXPECT_EQ(calls, 2);
-  EXPECT_EQ(r.iterations, 2);
+  EXPECT_EQ(calls, 2); // the start, then one iteration
+  EXPECT_EQ(r.iterations, 1);
+  EXPECT_TRUE(r.stopped_by_visitor);
+
+  // Stopped at the start: nothing moves.
+  Mesh untouched = load("monkey_saddle.off");
+  const std::vector<Point> before = points_of(untouched);
+  calls = 0;
+  visitor.stop_after = 1;
+  const TS::Optimization_result r0 = TS::optimize_tilable_surface(
+    untouched, clustering_parameters(single_cluster(untouched), TS::parameters::visitor(visitor)));
+  EXPECT_EQ(calls, 1);
+  EXPECT_EQ(r0.iterations, 0);
+  EXPECT_TRUE(r0.stopped_by_visitor);
+  EXPECT_TRUE(points_of(untouched) == before);
 }
 
 TEST(Optimize, InvalidInputThrowsBeforeTouchingTheMesh)

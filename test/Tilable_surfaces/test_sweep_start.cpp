@@ -170,3 +170,40 @@ TEST(SweepStart, PipelineEndsTilableEvenWithoutIterations)
                                                    .use_segment_candidates(false)).is_tilable());
   }
 }
+
+// A solve from the exact start is kept only if it ends exact and closer to
+// the input (symmetric Hausdorff distance) than the start: whatever the
+// number of iterations, the result is tilable, checked independently, and no
+// farther than the swept surface.
+TEST(SweepStart, SolveFromTheStartNeverEndsFarther)
+{
+  const Mesh input = growing_horn();
+  for(std::size_t k : {8u, 19u})
+  {
+    const std::vector<std::size_t> label = sweeps(input, k).at(0);
+    const TSI::Point_matrix start = start_of(input, label);
+    auto clustered = [&](Mesh& m) {
+      Clustering c = add_clustering_maps(m);
+      for(Face f : faces(m))
+        c.cluster[f] = int(label[std::size_t(f)]);
+      return c;
+    };
+    Mesh swept = input;
+    for(Vertex v : vertices(swept))
+      swept.point(v) = Point(start(int(v), 0), start(int(v), 1), start(int(v), 2));
+    const Clustering s = clustered(swept);
+    const double start_distance =
+      TS::measure_tilability(swept, input, TS::parameters::face_cluster_map(s.cluster).face_orientation_map(s.orientation))
+        .hausdorff_distance;
+    for(int iterations : {1, 3, 10, 30, 60})
+    {
+      Mesh m = input;
+      const Clustering c = clustered(m);
+      const auto maps = TS::parameters::face_cluster_map(c.cluster).face_orientation_map(c.orientation);
+      TSI::optimize_tilable_surface(TSI::Validated_mesh(true), m, maps.number_of_iterations(iterations), &start);
+      EXPECT_LE(congruence_by_umeyama(m, c.cluster, c.orientation), 1e-6) << "K = " << k << ", " << iterations;
+      EXPECT_LE(TS::measure_tilability(m, input, maps).hausdorff_distance, start_distance)
+        << "K = " << k << ", " << iterations << " iterations";
+    }
+  }
+}

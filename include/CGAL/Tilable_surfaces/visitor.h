@@ -26,8 +26,10 @@ struct Default_visitor
 {
   /// Called after iteration `iteration` (from 1) of a solver with the
   /// congruence error (user manual, section Definitions) and the solver's
-  /// objective (on the normalized input). Returning `false` stops the solver,
-  /// and the search around it. The default solver measures the congruence
+  /// objective (on the normalized input), and once before its first
+  /// iteration with `iteration` 0 and the values at its starting point.
+  /// Returning `false` stops the solver, and the search around it; at
+  /// iteration 0 the solver then makes no step at all. The default solver measures the congruence
   /// error only when it may meet the tolerance and every 10 iterations; in
   /// between it passes its estimate, the largest constraint residual in mean
   /// edge lengths. `Optimization_result::converged` is always decided on the

@@ -340,13 +340,15 @@ inline std::vector<std::size_t> group_columns(const Quad_grid& grid, std::size_t
 // with the least total cost; the cluster of every face, numbered by first
 // face, or an empty vector when no partition uses exactly k molds.
 //
-// Two segments of several rows never follow each other: in such a segment
-// every quad has equal edges on its two row sides, so both would share one
-// section and tie the lengths of the whole chain together, which the
-// per-run cost does not see. A band or a one-row segment between them lets
-// the section change.
+// Unless `segments_may_touch`, two segments of several rows never follow
+// each other: in such a segment every quad has equal edges on its two row
+// sides, so both would share one section and tie the lengths of the whole
+// chain together, which the per-run cost does not see. A band or a one-row
+// segment between them lets the section change. A sweep wants exactly that
+// one section (sweep_clusterings()).
 inline std::vector<std::size_t> best_runs(const Quad_grid& grid,
-                                          const std::vector<const Run_option*>& options, std::size_t k)
+                                          const std::vector<const Run_option*>& options, std::size_t k,
+                                          bool segments_may_touch = false)
 {
   const std::size_t rows = grid.rows;
   const double infinity = (std::numeric_limits<double>::max)();
@@ -363,7 +365,7 @@ inline std::vector<std::size_t> best_runs(const Quad_grid& grid,
       {
         const std::size_t m = options[i]->groups;
         if(m > k) continue;
-        const bool segment = m > 1 && b - a > 1;
+        const bool segment = !segments_may_touch && m > 1 && b - a > 1;
         const double run = options[i]->cost(a, b);
         for(std::size_t used = 0; used + m <= k; ++used)
           for(bool before_segment : {false, true})
@@ -452,18 +454,17 @@ segment_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
 }
 
 // Whether the last row of `grid` meets the first (a torus): no sweep closes
-// up on itself.
+// up on itself. The first quad of the last row then shares its corners with
+// the first quad of the first row, beyond the edge that two rows share
+// anyway when there are only two.
 inline bool closed_across_rows(const Quad_grid& grid)
 {
-  if(grid.rows < 3)
-    return false;
   const Panel& first = grid.corners[grid.face_at[0]];
   const Panel& last = grid.corners[grid.face_at[(grid.rows - 1) * grid.columns]];
+  int shared = 0;
   for(const Eigen::Vector3d& p : first)
-    for(const Eigen::Vector3d& q : last)
-      if(p == q)
-        return true;
-  return false;
+    shared += int(std::count(last.begin(), last.end(), p) > 0);
+  return shared > (grid.rows == 2 ? 2 : 0);
 }
 
 // Sweep clusterings with k clusters: the rows cut into the k / columns runs
@@ -493,28 +494,15 @@ sweep_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, s
     std::vector<std::size_t> all_columns(columns);
     std::iota(all_columns.begin(), all_columns.end(), std::size_t(0));
     const Run_option option = run_option(grid, all_columns, columns, policy);
-    // cost[s * (rows + 1) + b]: rows [0, b) in s runs; start of the last.
-    const double infinity = (std::numeric_limits<double>::max)();
-    std::vector<double> cost((runs + 1) * (rows + 1), infinity);
-    std::vector<std::size_t> start(cost.size(), 0);
-    cost[0] = 0;
-    for(std::size_t s = 1; s <= runs; ++s)
-      for(std::size_t b = s; b <= rows; ++b)
-        for(std::size_t a = s - 1; a < b; ++a)
-        {
-          const double before = cost[(s - 1) * (rows + 1) + a];
-          if(before == infinity)
-            continue;
-          const double c = before + option.cost(a, b);
-          if(c < cost[s * (rows + 1) + b])
-          {
-            cost[s * (rows + 1) + b] = c;
-            start[s * (rows + 1) + b] = a;
-          }
-        }
-    std::vector<std::size_t> first_row(runs + 1, rows);
-    for(std::size_t s = runs; s > 0; --s)
-      first_row[s - 1] = start[s * (rows + 1) + first_row[s]];
+    std::vector<std::size_t> label = best_runs(grid, {&option}, runs * columns, true);
+    if(label.empty())
+      continue;
+    // Where the runs start: a new run gives column 0 a new cluster.
+    std::vector<std::size_t> first_row(1, 0);
+    for(std::size_t r = 1; r < rows; ++r)
+      if(label[grid.face_at[r * columns]] != label[grid.face_at[(r - 1) * columns]])
+        first_row.push_back(r);
+    first_row.push_back(rows);
     std::size_t longest = 0;
     for(std::size_t s = 1; s < runs; ++s)
       if(first_row[s + 1] - first_row[s] > first_row[longest + 1] - first_row[longest])
@@ -522,11 +510,6 @@ sweep_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, s
     const std::size_t length = first_row[longest + 1] - first_row[longest];
     if(left > 0 && length < 2)
       continue;
-    std::vector<std::size_t> label(grid.face_at.size());
-    for(std::size_t s = 0; s < runs; ++s)
-      for(std::size_t r = first_row[s]; r < first_row[s + 1]; ++r)
-        for(std::size_t c = 0; c < columns; ++c)
-          label[grid.face_at[r * columns + c]] = s * columns + c;
     // The leftover molds: columns spread evenly over the row.
     for(std::size_t t = 0; t < left; ++t)
     {

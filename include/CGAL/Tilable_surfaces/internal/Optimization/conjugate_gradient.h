@@ -46,8 +46,10 @@ Solver_report polak_ribiere(const Solver_input& in, const Solver_settings& setti
   Point_matrix direction = -g;
   // First trial step: move by about a hundredth of an edge.
   double alpha_guess = 0.01 * ell / (std::max)(direction.cwiseAbs().maxCoeff(), 1e-300);
+  report.congruence_error = congruence_error(in.problem, X);
+  report.stopped_by_visitor = !visitor.iteration(0, report.congruence_error, f);
 
-  for(int it = 1; it <= settings.max_iterations; ++it)
+  for(int it = 1; it <= settings.max_iterations && !report.stopped_by_visitor; ++it)
   {
     const double slope0 = g.cwiseProduct(direction).sum();
     if(!(slope0 < 0))

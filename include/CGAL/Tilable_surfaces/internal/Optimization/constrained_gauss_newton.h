@@ -167,6 +167,14 @@ public:
       return m_report;
     m_constraints.evaluate(m_X, m_variable, m_n, m_c, nullptr);
     m_stopped = false;
+    // The first attempt shows the visitor its starting point (iteration 0):
+    // a caller out of time can stop before any step.
+    if(m_variant == GAUSS_NEWTON &&
+       !m_visitor.iteration(0, m_report.congruence_error, m_settings.weights.distance * m_objective.value(m_X)))
+    {
+      m_stopped = true;
+      return m_report;
+    }
     if(sqp_phase() || projection_phase())
       return m_report;
     if(!m_measured)

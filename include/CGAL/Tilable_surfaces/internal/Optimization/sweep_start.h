@@ -49,6 +49,8 @@ std::vector<std::vector<std::size_t> > grid_rings(const PolygonMesh& pm, FaceInd
   typedef typename boost::graph_traits<PolygonMesh>::face_descriptor face_descriptor;
   typedef typename boost::graph_traits<PolygonMesh>::halfedge_descriptor halfedge_descriptor;
   const std::size_t rows = grid.rows, columns = grid.columns;
+  if(closed_across_rows(grid))
+    return {};
   std::vector<face_descriptor> face_of(num_faces(pm));
   for(face_descriptor f : faces(pm))
     face_of[get(fim, f)] = f;
@@ -84,7 +86,7 @@ std::vector<std::vector<std::size_t> > grid_rings(const PolygonMesh& pm, FaceInd
     bool shared = true;
     for(std::size_t r = 0; r + 1 < rows && shared; ++r)
       shared = second[r] == first[r + 1];
-    if(!shared || first[0] == second[rows - 1])
+    if(!shared)
       continue;
     rings.push_back(first[0]);
     rings.insert(rings.end(), second.begin(), second.end());

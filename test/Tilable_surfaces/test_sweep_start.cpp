@@ -43,6 +43,25 @@ TSI::Point_matrix start_of(const Mesh& m, const std::vector<std::size_t>& label)
                           TSI::read_points(m, get(CGAL::vertex_point, m), get(CGAL::vertex_index, m)), label);
 }
 
+// `m` with its vertices at `points` (by vertex index).
+Mesh moved_to(const Mesh& m, const TSI::Point_matrix& points)
+{
+  Mesh moved = m;
+  for(Vertex v : vertices(moved))
+    moved.point(v) = Point(points(int(v), 0), points(int(v), 1), points(int(v), 2));
+  return moved;
+}
+
+// Clustering maps on `m` holding `label`; every face of a sweep has its
+// corners in the same order, so every orientation is 0.
+Clustering clustered(Mesh& m, const std::vector<std::size_t>& label)
+{
+  Clustering c = add_clustering_maps(m);
+  for(Face f : faces(m))
+    c.cluster[f] = int(label[std::size_t(f)]);
+  return c;
+}
+
 // The largest distance between ring i of `points` (vertex index
 // i * around + j, tube_mesh.h) fitted rigidly onto ring 0, and ring i.
 double ring_spread(const TSI::Point_matrix& points)
@@ -108,12 +127,8 @@ TEST(SweepStart, StartIsOneSectionSweptAndExact)
     const TSI::Point_matrix start = start_of(m, label);
     ASSERT_EQ(start.rows(), rings * around + around);
     EXPECT_LE(ring_spread(start), 1e-12);
-    Mesh moved = m;
-    for(Vertex v : vertices(moved))
-      moved.point(v) = Point(start(int(v), 0), start(int(v), 1), start(int(v), 2));
-    Clustering c = add_clustering_maps(moved);
-    for(Face f : faces(moved))
-      c.cluster[f] = int(label[std::size_t(f)]);  // corners in the same order on every face: orientation 0
+    Mesh moved = moved_to(m, start);
+    const Clustering c = clustered(moved, label);
     EXPECT_LE(congruence_by_umeyama(moved, c.cluster, c.orientation), 1e-12) << "K = " << k;
   }
 }
@@ -182,23 +197,15 @@ TEST(SweepStart, SolveFromTheStartNeverEndsFarther)
   {
     const std::vector<std::size_t> label = sweeps(input, k).at(0);
     const TSI::Point_matrix start = start_of(input, label);
-    auto clustered = [&](Mesh& m) {
-      Clustering c = add_clustering_maps(m);
-      for(Face f : faces(m))
-        c.cluster[f] = int(label[std::size_t(f)]);
-      return c;
-    };
-    Mesh swept = input;
-    for(Vertex v : vertices(swept))
-      swept.point(v) = Point(start(int(v), 0), start(int(v), 1), start(int(v), 2));
-    const Clustering s = clustered(swept);
+    Mesh swept = moved_to(input, start);
+    const Clustering s = clustered(swept, label);
     const double start_distance =
       TS::measure_tilability(swept, input, TS::parameters::face_cluster_map(s.cluster).face_orientation_map(s.orientation))
         .hausdorff_distance;
     for(int iterations : {1, 3, 10, 30, 60})
     {
       Mesh m = input;
-      const Clustering c = clustered(m);
+      const Clustering c = clustered(m, label);
       const auto maps = TS::parameters::face_cluster_map(c.cluster).face_orientation_map(c.orientation);
       TSI::optimize_tilable_surface(TSI::Validated_mesh(true), m, maps.number_of_iterations(iterations), &start);
       EXPECT_LE(congruence_by_umeyama(m, c.cluster, c.orientation), 1e-6) << "K = " << k << ", " << iterations;

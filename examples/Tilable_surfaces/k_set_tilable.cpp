@@ -71,7 +71,7 @@ struct Options
   double distance_weight = TS::defaults::distance_weight;
   double fairness_weight = -1; // negative: the solver's default
   double tangential_weight = TS::defaults::tangential_weight;
-  int optimized_candidates = 0; // 0: the package's default
+  int optimized_candidates = -1; // negative: the package's default
   int improvement_rounds = TS::defaults::number_of_improvement_rounds;
   int candidates = int(TS::defaults::number_of_candidates), iterations = -1, threads = 0;
   unsigned int seed = TS::defaults::random_seed;
@@ -154,8 +154,9 @@ Options parse(int argc, char** argv, bool& help)
      "fairness (default 1e-4)")
     ("tangential-weight", po::value<double>(&o.tangential_weight)->default_value(o.tangential_weight),
      "default solver: cost of sliding in the input surface relative to leaving it, in (0, 1]")
-    ("optimized-candidates", po::value<int>(&o.optimized_candidates)->default_value(0),
-     "default solver: clusterings optimized fully, the closest result is kept (0: 2 + 10000 / faces, at most 12)")
+    ("optimized-candidates", po::value<int>(&o.optimized_candidates),
+     "default solver: clusterings optimized fully, the closest result is kept; 0: none if a sweep is exact, "
+     "else 1 (default: 2 + 10000 / faces, at most 12; 0 above 5000 faces)")
     ("improvement-rounds", po::value<int>(&o.improvement_rounds)->default_value(o.improvement_rounds),
      "default solver: rounds of split, merge and re-optimization, each kept only if better")
     ("candidates", po::value<int>(&o.candidates)->default_value(o.candidates),
@@ -247,7 +248,7 @@ Options parse(int argc, char** argv, bool& help)
     throw Usage_error("--distance-weight must be > 0 and --fairness-weight >= 0");
   if(!(o.tangential_weight > 0 && o.tangential_weight <= 1))
     throw Usage_error("--tangential-weight must be in (0, 1]");
-  if(o.optimized_candidates < 0 || o.improvement_rounds < 0)
+  if((vm.count("optimized-candidates") && o.optimized_candidates < 0) || o.improvement_rounds < 0)
     throw Usage_error("--optimized-candidates and --improvement-rounds must be >= 0");
   return o;
 }
@@ -352,6 +353,13 @@ int write_curve(const Options& o, const std::vector<TS::Tile_count_trial>& trial
   return 0;
 }
 
+// The user's --optimized-candidates, or the package's default for `mesh`.
+std::size_t optimized_candidates(const Options& o, const Mesh& mesh)
+{
+  return o.optimized_candidates >= 0 ? std::size_t(o.optimized_candidates)
+                                     : TS::default_number_of_optimized_candidates(num_faces(mesh));
+}
+
 int run(const Options& o)
 {
 #ifdef CGAL_LINKED_WITH_TBB
@@ -391,9 +399,7 @@ int run(const Options& o)
               .fairness_weight(o.fairness_weight < 0 ? TS::default_fairness_weight(solver)
                                                      : o.fairness_weight)
               .tangential_weight(o.tangential_weight)
-              .number_of_optimized_candidates(o.optimized_candidates > 0
-                                                ? std::size_t(o.optimized_candidates)
-                                                : TS::default_number_of_optimized_candidates(num_faces(mesh)))
+              .number_of_optimized_candidates(optimized_candidates(o, mesh))
               .number_of_improvement_rounds(o.improvement_rounds)
               .number_of_candidates(std::size_t(o.candidates))
               .solver(solver)
@@ -472,9 +478,7 @@ int run(const Options& o)
                                                   ? TS::default_fairness_weight(solver)
                                                   : o.fairness_weight},
                             {"tangential_weight", o.tangential_weight},
-                            {"optimized_candidates", o.optimized_candidates > 0
-                                                       ? std::size_t(o.optimized_candidates)
-                                                       : TS::default_number_of_optimized_candidates(num_faces(mesh))},
+                            {"optimized_candidates", optimized_candidates(o, mesh)},
                             {"improvement_rounds", o.improvement_rounds},
                             {"candidates", o.candidates},
                             {"solver", o.solver},

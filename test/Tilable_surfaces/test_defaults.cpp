@@ -106,12 +106,14 @@ TEST(Defaults, TheUserManualStatesTheDefaultsOfDefaultsH)
   EXPECT_EQ(numbers_in(doc.at("fairness_weight")), both(TS::default_fairness_weight));
   EXPECT_EQ(numbers_in(doc.at("convergence_tolerance")), both(TS::default_convergence_tolerance));
   EXPECT_EQ(numbers_in(doc.at("number_of_iterations")), both(TS::default_number_of_iterations));
-  // "2 + 10000 / number of faces, at most 12".
+  // "2 + 10000 / number of faces, at most 12; 0 above 5000 faces".
   const std::vector<double> candidates = numbers_in(doc.at("number_of_optimized_candidates"));
-  ASSERT_EQ(candidates.size(), 3u);
-  for(std::size_t faces : {1u, 96u, 1000u, 5000u, 100000u})
+  ASSERT_EQ(candidates.size(), 5u);
+  for(std::size_t faces : {1u, 96u, 1000u, 5000u, 5001u, 10000u, 100000u})
     EXPECT_EQ(double(TS::default_number_of_optimized_candidates(faces)),
-              (std::min)(candidates[2], candidates[0] + std::floor(candidates[1] / double(faces))))
+              double(faces) > candidates[4]
+                ? candidates[3]
+                : (std::min)(candidates[2], candidates[0] + std::floor(candidates[1] / double(faces))))
       << faces << " faces";
 }
 

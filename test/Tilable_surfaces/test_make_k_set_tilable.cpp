@@ -8,6 +8,7 @@
 #include "congruence_check.h"
 
 #include "test_mesh.h"
+#include "tube_mesh.h"
 
 #include <gtest/gtest.h>
 
@@ -444,6 +445,66 @@ TEST(MakeKSetTilable, VisitorThatStopsEndsTheSearch)
   EXPECT_EQ(r.clustering.candidates[r.clustering.chosen_candidate].origin, TS::Clustering_candidate::GRID_SWEEPS);
   EXPECT_TRUE(r.is_tilable());
   EXPECT_LE(congruence_by_umeyama(mesh, cluster, orientation), 1e-6);
+}
+
+namespace {
+
+bool has_phase(const Recording_visitor& visitor, const std::string& name)
+{
+  return std::find(visitor.phases.begin(), visitor.phases.end(), name) != visitor.phases.end();
+}
+
+} // namespace
+
+// With number_of_optimized_candidates 0, an exact sweep ends the search: the
+// De Beers stand-in (a grid with sweeps at K = 30) ends on a sweep, tilable
+// by an independent check, and nothing else is predicted or optimized.
+// Where no sweep exists (monkey saddle, K = 5), 0 counts as 1.
+TEST(MakeKSetTilable, ZeroCandidatesEndAtAnExactSweep)
+{
+  Mesh mesh = read("de_beers_ginza.off");
+  auto cluster = mesh.add_property_map<Mesh::Face_index, int>("f:c", -1).first;
+  auto orientation = mesh.add_property_map<Mesh::Face_index, int>("f:o", -1).first;
+  Recording_visitor visitor;
+  const TS::K_set_tilable_result r = TS::make_k_set_tilable(
+    mesh, TSP::number_of_tiles(30).number_of_optimized_candidates(0).face_cluster_map(cluster)
+            .face_orientation_map(orientation).visitor(std::ref(visitor)));
+  EXPECT_EQ(r.clustering.candidates[r.clustering.chosen_candidate].origin, TS::Clustering_candidate::GRID_SWEEPS);
+  EXPECT_TRUE(r.is_tilable());
+  EXPECT_LE(congruence_by_umeyama(mesh, cluster, orientation), 1e-6);
+  EXPECT_TRUE(has_phase(visitor, "sweep candidate"));
+  for(const char* skipped : {"displacement prediction", "candidate optimization", "improvement round"})
+    EXPECT_FALSE(has_phase(visitor, skipped)) << skipped;
+
+  const Mesh saddle = read("monkey_saddle.off");
+  auto solved_with = [&](std::size_t optimized) {
+    Mesh m = saddle;
+    const TS::K_set_tilable_result s =
+      TS::make_k_set_tilable(m, TSP::number_of_tiles(5).number_of_optimized_candidates(optimized));
+    for(const TS::Clustering_candidate& c : s.clustering.candidates)
+      EXPECT_NE(c.origin, TS::Clustering_candidate::GRID_SWEEPS);
+    return points(m);
+  };
+  EXPECT_TRUE(solved_with(0) == solved_with(1));
+}
+
+// Above 5,000 faces the default is 0 candidates: on a 5,050-quad horn whose
+// rings grow (so the input itself is not tilable) at K = 100, the result is
+// a sweep, exact by an independent check, and no solve from the input runs.
+TEST(MakeKSetTilable, AboveFiveThousandFacesAnExactSweepIsTheResult)
+{
+  Mesh mesh = horn<Mesh>(101, 50, 4.0, 2.0, [](int i) { return 1.0 + 0.005 * i; });
+  ASSERT_GT(num_faces(mesh), 5000u);
+  auto cluster = mesh.add_property_map<Mesh::Face_index, int>("f:c", -1).first;
+  auto orientation = mesh.add_property_map<Mesh::Face_index, int>("f:o", -1).first;
+  Recording_visitor visitor;
+  const TS::K_set_tilable_result r = TS::make_k_set_tilable(
+    mesh, TSP::number_of_tiles(100).face_cluster_map(cluster).face_orientation_map(orientation)
+            .visitor(std::ref(visitor)));
+  EXPECT_EQ(r.clustering.candidates[r.clustering.chosen_candidate].origin, TS::Clustering_candidate::GRID_SWEEPS);
+  EXPECT_LE(r.clustering.cluster_sizes.size(), 100u);
+  EXPECT_LE(congruence_by_umeyama(mesh, cluster, orientation), 1e-6);
+  EXPECT_FALSE(has_phase(visitor, "candidate optimization"));
 }
 
 #ifdef CGAL_LINKED_WITH_TBB

@@ -289,10 +289,14 @@ public:
   ///
   /// -# The sweep clusterings of the pool (`Clustering_candidate::GRID_SWEEPS`)
   ///    are solved first, each from the swept surface at which it is exact
-  ///    (user manual, section TS_Sweeps) for at most 10 iterations, the
-  ///    swept surface kept when the solve does not end exact. The best of them
-  ///    is a fallback that the final result (after the rounds below) must
-  ///    beat; it is not ranked, sets no iteration cap and starts no round.
+  ///    (user manual, section TS_Sweeps) for at most 10 iterations (none above
+  ///    5,000 faces), the swept surface kept when the solve does not end
+  ///    exact. The best of them is a fallback that the final result (after
+  ///    the rounds below) must beat; it is not ranked, sets no iteration cap
+  ///    and starts no round. When `number_of_optimized_candidates` is 0 (its
+  ///    default above 5,000 faces) and a sweep is exact, the search ends
+  ///    there: the best sweep is the result and the steps below are skipped.
+  ///    Without an exact sweep, 0 counts as 1.
   /// -# The other candidates of the last `cluster()` are ranked two ways: by their
   ///    predicted displacement (`predict_displacement()`; with a parallel
   ///    `ConcurrencyTag`, one candidate per thread, with the same values), and by the spread
@@ -351,9 +355,8 @@ public:
       return optimize(user_np);
     auto&& visitor = internal::visitor_of(user_np);
     const auto np = internal::with_visitor(user_np, visitor);
-    const std::size_t optimized = (std::max)(std::size_t(1), std::size_t(choose_parameter(
-      get_parameter(np, internal_np::number_of_optimized_candidates),
-      default_number_of_optimized_candidates(num_faces(m_mesh)))));
+    const std::size_t optimized = choose_parameter(get_parameter(np, internal_np::number_of_optimized_candidates),
+                                                   default_number_of_optimized_candidates(num_faces(m_mesh)));
     const int rounds = choose_parameter(get_parameter(np, internal_np::number_of_improvement_rounds),
                                       defaults::number_of_improvement_rounds);
     CGAL::Real_timer timer;
@@ -383,10 +386,16 @@ public:
         visitor.phase("sweep candidate", timer.time());
       }
 
-    // 1. The candidates most likely to end closest, each optimized fully.
-    timer.reset();
-    const std::vector<std::size_t> ranked = stopped ? std::vector<std::size_t>() : ranked_candidates(np, optimized);
-    visitor.phase("displacement prediction", timer.time());
+    // 1. The candidates most likely to end closest, each optimized fully;
+    // none when 0 are asked for and a sweep is exact.
+    const bool sweep_suffices = optimized == 0 && best_sweep && best_sweep->optimization.converged;
+    std::vector<std::size_t> ranked;
+    if(!stopped && !sweep_suffices)
+    {
+      timer.reset();
+      ranked = ranked_candidates(np, (std::max)(std::size_t(1), optimized));
+      visitor.phase("displacement prediction", timer.time());
+    }
     State best;
     Solved_ahead ahead;
     for(std::size_t r = 0; r < ranked.size() && !stopped; ++r)
@@ -405,7 +414,7 @@ public:
       }
       visitor.phase("candidate optimization", timer.time());
     }
-    if(ranked.empty() && best_sweep) // the visitor stopped a sweep's solve
+    if(ranked.empty() && best_sweep) // a sweep suffices, or the visitor stopped one's solve
     {
       best = std::move(*best_sweep);
       best_sweep.reset();
@@ -422,7 +431,7 @@ public:
     std::size_t failed_in_a_row = 0;
     for(int round = 0; (round < rounds || (rounds > 0 && round < rounds + repair_rounds &&
                                            !best.optimization.converged)) &&
-                       number_of_clusters() > 1 && !stopped;
+                       number_of_clusters() > 1 && !stopped && !sweep_suffices;
         ++round)
     {
       timer.reset();
@@ -451,10 +460,14 @@ public:
       set_state(*best_sweep);
       m_clustering.chosen_candidate = best_sweep_index;
     }
-    m_clustering.choice_reason = std::string(sweep_chosen ? "a sweep clustering, better than " : "closest result among ") +
-      "the " + std::to_string(ranked.size()) +
-      " candidates of smallest predicted displacement or length spread, or first segment clusterings, then " +
-      std::to_string(rounds_done) + " improvement or repair rounds; " + m_clustering.choice_reason;
+    m_clustering.choice_reason =
+      (sweep_suffices ? std::string("an exact sweep clustering, no other candidate optimized "
+                                    "(number_of_optimized_candidates 0)")
+                      : std::string(sweep_chosen ? "a sweep clustering, better than " : "closest result among ") +
+                          "the " + std::to_string(ranked.size()) +
+                          " candidates of smallest predicted displacement or length spread, or first segment "
+                          "clusterings, then " + std::to_string(rounds_done) + " improvement or repair rounds") +
+      "; " + m_clustering.choice_reason;
     return m_optimization;
   }
 

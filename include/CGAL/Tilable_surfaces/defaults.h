@@ -153,12 +153,20 @@ inline double default_convergence_tolerance(Solver_type solver)
 
 /// \ingroup PkgTilableSurfacesRef
 /// The default of `number_of_optimized_candidates` for a mesh of
-/// `number_of_faces` quads: 2 + 10000 / `number_of_faces`, at most 12.
+/// `number_of_faces` quads: 2 + 10000 / `number_of_faces`, at most 12, and 0
+/// above 5000 faces.
 /// Solves of small meshes take a second or less, and there the ranking of the
 /// candidates is least reliable (tunnel stand-in, 1152 quads, K = 8: the
 /// best candidate ranks 8th and ends 1.6 times closer than the first).
+/// Above 5000 faces a solve from the input takes minutes and may not end
+/// exact (seashell parametrization, 10,000 quads, K = 100: the candidates and
+/// rounds stalled at 2.8e-3 after 1,397 s), so 0: an exact sweep
+/// clustering, found in seconds, ends the search
+/// (`K_set_tilable_surface::optimize_closest()`); without one, 0 counts as 1.
 inline std::size_t default_number_of_optimized_candidates(std::size_t number_of_faces)
 {
+  if(number_of_faces > 5000)
+    return 0;
   return (std::min)(std::size_t(12), 2 + 10000 / (std::max)(number_of_faces, std::size_t(1)));
 }
 

@@ -201,6 +201,11 @@ Optimization_result optimize_tilable_surface(Validated_mesh, PolygonMesh& pm, co
     setup.solver == CONSTRAINED_GAUSS_NEWTON
       ? constrained_gauss_newton(input, settings, X, visitor)
       : polak_ribiere(input, settings, X, visitor);
+  // A solve that made no step from the start (stopped there by the visitor,
+  // or given no iteration) returns the start itself, measured once.
+  const bool compare_with_start = input.start != nullptr && report.iterations > 0;
+  if(input.start != nullptr && !compare_with_start)
+    X = S;
   result.iterations = report.iterations;
   result.stopped_by_visitor = report.stopped_by_visitor;
   result.objective = report.objective;
@@ -222,7 +227,7 @@ Optimization_result optimize_tilable_surface(Validated_mesh, PolygonMesh& pm, co
                        (!problem.planar || result.measure.planarity_error <= settings.congruence_tolerance);
   };
   measured(X);
-  if(input.start != nullptr)
+  if(compare_with_start)
   {
     const Tilability_measure solved = result.measure;
     const bool solved_is_exact = result.converged;

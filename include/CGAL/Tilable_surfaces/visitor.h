@@ -29,10 +29,10 @@ struct Default_visitor
   /// objective (on the normalized input), and once before its first
   /// iteration with `iteration` 0 and the values at its starting point.
   /// Returning `false` stops the solver, and the search around it; at
-  /// iteration 0 the solver then makes no step at all. The default solver measures the congruence
-  /// error only when it may meet the tolerance and every 10 iterations; in
-  /// between it passes its estimate, the largest constraint residual in mean
-  /// edge lengths. `Optimization_result::converged` is always decided on the
+  /// iteration 0 the solver then makes no step at all. The default solver
+  /// measures the congruence error only when it may meet the tolerance and
+  /// every 10 iterations; in between it passes its estimate, the largest
+  /// constraint residual in mean edge lengths. `Optimization_result::converged` is always decided on the
   /// measured value.
   bool iteration(int /*iteration*/, double /*congruence_error*/, double /*objective*/)
   {
@@ -42,8 +42,9 @@ struct Default_visitor
   /// Called when a phase ends, with its duration in seconds:
   /// `cluster_quads()`: "threshold clustering", "merges", "other candidates",
   /// "orientations";
-  /// `K_set_tilable_surface::optimize_closest()`: "displacement prediction",
-  /// "candidate optimization", "improvement round";
+  /// `K_set_tilable_surface::optimize_closest()`: "sweep candidate",
+  /// "displacement prediction", "candidate optimization", "improvement round"
+  /// (the last three only when the search goes beyond the sweeps);
   /// `make_k_set_tilable()` and `k_set_tilable_curve()`: "validation",
   /// "clustering", "optimization".
   void phase(const char* /*name*/, double /*seconds*/) {}

@@ -134,7 +134,8 @@ struct Sqp_tuning
 };
 
 // One solve from the input, numbering its iterations from `first_iteration`
-// + 1; `stopped` tells whether the visitor stopped it. Phase 1 uses the
+// + 1; `stopped` tells whether the visitor stopped it. The first attempt of a
+// solve (`shows_start`) also shows the visitor its starting point. Phase 1 uses the
 // exact Lagrangian Hessian or only H (Gauss-Newton), as `variant` says.
 template <typename Visitor>
 class Sqp_attempt
@@ -143,9 +144,10 @@ class Sqp_attempt
   typedef Sqp_tuning T;
 
 public:
-  Sqp_attempt(const Solver_input& in, const Solver_settings& settings, Sqp_variant variant,
+  Sqp_attempt(const Solver_input& in, const Solver_settings& settings, Sqp_variant variant, bool shows_start,
               int first_iteration, Point_matrix& X, Visitor& visitor, bool& stopped)
-    : m_in(in), m_settings(settings), m_variant(variant), m_exact_hessian(variant == EXACT_HESSIAN)
+    : m_in(in), m_settings(settings), m_variant(variant), m_shows_start(shows_start)
+    , m_exact_hessian(variant == EXACT_HESSIAN)
     , m_n(number_free_unknowns(in.fixed, m_variable)), m_ell(mean_edge_length(in.problem, in.X0))
     , m_tolerance(settings.congruence_tolerance), m_constraints(in.problem, m_ell)
     , m_isotropic(variant == ISOTROPIC_GAUSS_NEWTON ? in.metric.size() : 0, Eigen::Matrix3d::Identity())
@@ -167,9 +169,8 @@ public:
       return m_report;
     m_constraints.evaluate(m_X, m_variable, m_n, m_c, nullptr);
     m_stopped = false;
-    // The first attempt shows the visitor its starting point (iteration 0):
-    // a caller out of time can stop before any step.
-    if(m_variant == GAUSS_NEWTON &&
+    // Iteration 0: a caller out of time can stop before any step.
+    if(m_shows_start &&
        !m_visitor.iteration(0, m_report.congruence_error, m_settings.weights.distance * m_objective.value(m_X)))
     {
       m_stopped = true;
@@ -404,6 +405,7 @@ private:
   const Solver_input& m_in;
   const Solver_settings& m_settings;
   const Sqp_variant m_variant;
+  const bool m_shows_start;
   const bool m_exact_hessian;
   std::vector<int> m_variable;
   const int m_n;
@@ -433,7 +435,7 @@ Solver_report constrained_gauss_newton(const Solver_input& in, const Solver_sett
                                        Point_matrix& X, Visitor& visitor)
 {
   bool stopped = false;
-  Solver_report report = Sqp_attempt<Visitor>(in, settings, GAUSS_NEWTON, 0, X, visitor, stopped).run();
+  Solver_report report = Sqp_attempt<Visitor>(in, settings, GAUSS_NEWTON, true, 0, X, visitor, stopped).run();
   for(Sqp_variant variant : {ISOTROPIC_GAUSS_NEWTON, CAUTIOUS_GAUSS_NEWTON, EXACT_HESSIAN})
   {
     if(stopped || report.congruence_error <= settings.congruence_tolerance ||
@@ -441,7 +443,7 @@ Solver_report constrained_gauss_newton(const Solver_input& in, const Solver_sett
       break;
     Point_matrix Y;
     const Solver_report other =
-      Sqp_attempt<Visitor>(in, settings, variant, report.iterations, Y, visitor, stopped).run();
+      Sqp_attempt<Visitor>(in, settings, variant, false, report.iterations, Y, visitor, stopped).run();
     const int iterations = (std::max)(report.iterations, other.iterations);
     if(other.congruence_error < report.congruence_error)
     {

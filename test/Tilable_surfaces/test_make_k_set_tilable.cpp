@@ -362,7 +362,8 @@ struct Recording_visitor : TS::Default_visitor
 } // namespace
 
 // Given as std::ref, the user's visitor itself is called by every stage:
-// validation, the clustering's phases, the fidelity search and each solver.
+// validation, the clustering's phases, the fidelity search and each solver;
+// the monkey saddle is an open grid, with a sweep clustering per direction.
 TEST(MakeKSetTilable, OneVisitorFollowsEveryStage)
 {
   Mesh mesh = read("monkey_saddle.off");
@@ -374,9 +375,10 @@ TEST(MakeKSetTilable, OneVisitorFollowsEveryStage)
   EXPECT_GE(visitor.iterations, r.optimization.iterations);
   const std::vector<std::string> expected_order = {"validation", "threshold clustering", "merges",
                                                    "other candidates", "orientations", "clustering",
+                                                   "sweep candidate", "sweep candidate",
                                                    "displacement prediction", "candidate optimization"};
   ASSERT_GE(visitor.phases.size(), expected_order.size());
-  EXPECT_EQ(std::vector<std::string>(visitor.phases.begin(), visitor.phases.begin() + 8), expected_order);
+  EXPECT_EQ(std::vector<std::string>(visitor.phases.begin(), visitor.phases.begin() + 10), expected_order);
   EXPECT_EQ(visitor.phases.back(), "optimization");
 }
 
@@ -459,7 +461,8 @@ bool has_phase(const Recording_visitor& visitor, const std::string& name)
 // With number_of_optimized_candidates 0, an exact sweep ends the search: the
 // De Beers stand-in (a grid with sweeps at K = 30) ends on a sweep, tilable
 // by an independent check, and nothing else is predicted or optimized.
-// Where no sweep exists (monkey saddle, K = 5), 0 counts as 1.
+// Where no sweep exists (monkey saddle, K = 5, without the grid candidates,
+// which include the sweeps), 0 counts as 1.
 TEST(MakeKSetTilable, ZeroCandidatesEndAtAnExactSweep)
 {
   Mesh mesh = read("de_beers_ginza.off");
@@ -480,7 +483,8 @@ TEST(MakeKSetTilable, ZeroCandidatesEndAtAnExactSweep)
   auto solved_with = [&](std::size_t optimized) {
     Mesh m = saddle;
     const TS::K_set_tilable_result s =
-      TS::make_k_set_tilable(m, TSP::number_of_tiles(5).number_of_optimized_candidates(optimized));
+      TS::make_k_set_tilable(m, TSP::number_of_tiles(5).number_of_optimized_candidates(optimized)
+                                  .use_segment_candidates(false));
     for(const TS::Clustering_candidate& c : s.clustering.candidates)
       EXPECT_NE(c.origin, TS::Clustering_candidate::GRID_SWEEPS);
     return points(m);
@@ -489,22 +493,27 @@ TEST(MakeKSetTilable, ZeroCandidatesEndAtAnExactSweep)
 }
 
 // Above 5,000 faces the default is 0 candidates: on a 5,050-quad horn whose
-// rings grow (so the input itself is not tilable) at K = 100, the result is
-// a sweep, exact by an independent check, and no solve from the input runs.
+// rings grow (so the input itself is not tilable), at K = 100 and at K = 40
+// (fewer molds than the 50 quads of a ring), the result is a sweep, exact
+// by an independent check, and no solve from the input runs.
 TEST(MakeKSetTilable, AboveFiveThousandFacesAnExactSweepIsTheResult)
 {
-  Mesh mesh = horn<Mesh>(101, 50, 4.0, 2.0, [](int i) { return 1.0 + 0.005 * i; });
-  ASSERT_GT(num_faces(mesh), 5000u);
-  auto cluster = mesh.add_property_map<Mesh::Face_index, int>("f:c", -1).first;
-  auto orientation = mesh.add_property_map<Mesh::Face_index, int>("f:o", -1).first;
-  Recording_visitor visitor;
-  const TS::K_set_tilable_result r = TS::make_k_set_tilable(
-    mesh, TSP::number_of_tiles(100).face_cluster_map(cluster).face_orientation_map(orientation)
-            .visitor(std::ref(visitor)));
-  EXPECT_EQ(r.clustering.candidates[r.clustering.chosen_candidate].origin, TS::Clustering_candidate::GRID_SWEEPS);
-  EXPECT_LE(r.clustering.cluster_sizes.size(), 100u);
-  EXPECT_LE(congruence_by_umeyama(mesh, cluster, orientation), 1e-6);
-  EXPECT_FALSE(has_phase(visitor, "candidate optimization"));
+  for(std::size_t k : {100u, 40u})
+  {
+    Mesh mesh = horn<Mesh>(101, 50, 4.0, 2.0, [](int i) { return 1.0 + 0.005 * i; });
+    ASSERT_GT(num_faces(mesh), 5000u);
+    auto cluster = mesh.add_property_map<Mesh::Face_index, int>("f:c", -1).first;
+    auto orientation = mesh.add_property_map<Mesh::Face_index, int>("f:o", -1).first;
+    Recording_visitor visitor;
+    const TS::K_set_tilable_result r = TS::make_k_set_tilable(
+      mesh, TSP::number_of_tiles(k).face_cluster_map(cluster).face_orientation_map(orientation)
+              .visitor(std::ref(visitor)));
+    EXPECT_EQ(r.clustering.candidates[r.clustering.chosen_candidate].origin, TS::Clustering_candidate::GRID_SWEEPS)
+      << "K = " << k;
+    EXPECT_LE(r.clustering.cluster_sizes.size(), k);
+    EXPECT_LE(congruence_by_umeyama(mesh, cluster, orientation), 1e-6) << "K = " << k;
+    EXPECT_FALSE(has_phase(visitor, "candidate optimization")) << "K = " << k;
+  }
 }
 
 #ifdef CGAL_LINKED_WITH_TBB

@@ -136,3 +136,29 @@ TEST(SegmentCandidates, JoinThePoolOfClusterQuadsUnlessTurnedOff)
   EXPECT_GE(count(true), 1);
   EXPECT_EQ(count(false), 0);
 }
+
+// The greedy strip merges to several counts in one sequence give, at each
+// count, what a sequence to that count alone gives (a merge depends only on
+// the clusters before it); the rings of a tube growing unevenly.
+TEST(SegmentCandidates, OneMergeSequenceServesEveryCount)
+{
+  const Mesh m = tube<Mesh>(14, 6, [](int i) { return 1.0 + 0.1 * i + 0.03 * (i % 3); });
+  const auto fim = get(CGAL::face_index, m);
+  const auto vpm = get(CGAL::vertex_point, m);
+  const std::vector<TS::Panel> quads = TSI::face_quads(m, fim, CGAL::parameters::default_values());
+  const auto strips = TSI::quad_strips(m, fim);
+  const std::vector<std::size_t>& rings = strips[*std::max_element(strips[0].begin(), strips[0].end()) == 13 ? 0 : 1];
+  const std::size_t count = 1 + *std::max_element(rings.begin(), rings.end());
+  ASSERT_EQ(count, 14u);
+  const std::vector<std::size_t> targets{9, 2, 5, 14, 20};
+  const std::vector<std::vector<std::size_t> > together =
+    TSI::merge_strips_to_each(targets, m, fim, vpm, quads, TS::PROPER_RIGID_MOTIONS, rings, count);
+  ASSERT_EQ(together.size(), targets.size());
+  for(std::size_t t = 0; t < targets.size(); ++t)
+  {
+    EXPECT_EQ(std::set<std::size_t>(together[t].begin(), together[t].end()).size(), (std::min)(targets[t], count));
+    EXPECT_EQ(together[t], TSI::merge_strips_to_each({targets[t]}, m, fim, vpm, quads, TS::PROPER_RIGID_MOTIONS,
+                                                     rings, count)[0])
+      << targets[t] << " clusters";
+  }
+}

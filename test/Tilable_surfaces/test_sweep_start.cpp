@@ -1,7 +1,8 @@
 // Sweep clusterings of quad grids and their exact start
-// (internal/Clustering/segment_candidates.h, internal/Optimization/sweep_start.h):
-// every cluster in one column of a run of rows, exact on a swept surface
-// built directly, which make_k_set_tilable() falls back to.
+// (internal/Clustering/sweep_candidates.h, internal/Optimization/sweep_start.h):
+// every cluster in one column of a run of rows, or in a run of columns of
+// one run of rows, exact on a swept surface built directly, which
+// make_k_set_tilable() falls back to.
 
 #include "congruence_check.h"
 #include "optimization_test_helpers.h"
@@ -14,6 +15,7 @@
 
 #include <Eigen/Geometry>
 
+#include <limits>
 #include <set>
 #include <vector>
 
@@ -130,6 +132,100 @@ TEST(SweepStart, StartIsOneSectionSweptAndExact)
     Mesh moved = moved_to(m, start);
     const Clustering c = clustered(moved, label);
     EXPECT_LE(congruence_by_umeyama(moved, c.cluster, c.orientation), 1e-12) << "K = " << k;
+  }
+}
+
+namespace {
+
+// Whether every cluster of `label` (on a grid of `columns` columns, face
+// r * columns + c) is one run of consecutive columns of a closed ring, the
+// same in every row, and there are `k` of them.
+void expect_column_runs(const std::vector<std::size_t>& label, std::size_t columns, std::size_t k)
+{
+  EXPECT_EQ(std::set<std::size_t>(label.begin(), label.end()).size(), k);
+  for(std::size_t f = columns; f < label.size(); ++f)
+    EXPECT_EQ(label[f], label[f % columns]) << "face " << f;
+  // k runs of consecutive columns have k ends.
+  std::size_t ends = 0;
+  for(std::size_t c = 0; c < columns; ++c)
+    ends += label[c] != label[(c + 1) % columns] ? 1 : 0;
+  EXPECT_EQ(ends, k);
+}
+
+} // namespace
+
+// A straight prism over a square, 6 equal steps per side: ring to ring is a
+// translation, and each side is already a line of equal steps, so with
+// K = 8 (per side a run of 5 columns and a single one) the section needs
+// no move: the start is the input.
+TEST(SweepStart, PrismSidesAreColumnRunsAlready)
+{
+  const int steps = 6, columns = 4 * steps, rows = 5;
+  const Mesh m = swept_tube<Mesh>(rows, columns, [&](int i, int j) {
+    const double corner[5][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}, {0, 0}};
+    const int side = j / steps;
+    const double t = double(j % steps) / steps;
+    return Point(corner[side][0] + t * (corner[side + 1][0] - corner[side][0]),
+                 corner[side][1] + t * (corner[side + 1][1] - corner[side][1]), 0.3 * i);
+  });
+  const std::vector<std::vector<std::size_t> > labels = sweeps(m, 8);
+  ASSERT_EQ(labels.size(), 1u);
+  expect_column_runs(labels[0], columns, 8);
+  const TSI::Point_matrix start = start_of(m, labels[0]);
+  ASSERT_EQ(start.rows(), (rows + 1) * columns);
+  EXPECT_LE((start - TSI::read_points(m, get(CGAL::vertex_point, m), get(CGAL::vertex_index, m))).cwiseAbs().maxCoeff(),
+            1e-9);
+}
+
+// With more columns than molds (24 quads per ring, K = 10), the growing horn
+// has one run of rows whose columns are cut into 10 runs of consecutive
+// columns; the start is exact, checked independently, where the input is
+// far from it (its section grows).
+TEST(SweepStart, MoreColumnsThanMoldsAreCutIntoRuns)
+{
+  const int columns = 24;
+  const Mesh m = horn<Mesh>(rings, columns, 3.0, 2.0, [](int i) { return 1.0 + 0.075 * i; });
+  const std::vector<std::vector<std::size_t> > labels = sweeps(m, 10);
+  ASSERT_EQ(labels.size(), 1u);
+  expect_column_runs(labels[0], columns, 10);
+  Mesh input = m;
+  const Clustering at_input = clustered(input, labels[0]);
+  EXPECT_GT(congruence_by_umeyama(input, at_input.cluster, at_input.orientation), 1e-2);
+  const TSI::Point_matrix start = start_of(m, labels[0]);
+  ASSERT_EQ(start.rows(), (rings + 1) * columns);
+  Mesh moved = moved_to(m, start);
+  const Clustering c = clustered(moved, labels[0]);
+  EXPECT_LE(congruence_by_umeyama(moved, c.cluster, c.orientation), 1e-9);
+}
+
+// A flat fan: its rings are radial lines turned about the z axis, so a run
+// of columns on a helix about that axis (at one distance from it) would
+// collapse onto a point. With K = 5 for 12 quads per ring, no sweep
+// clustering's start has an edge shorter than half the input's shortest.
+TEST(SweepStart, ColumnRunsNeverCollapse)
+{
+  const int columns = 12, rows = 8;
+  Mesh m;
+  std::vector<Vertex> v;
+  for(int i = 0; i <= rows; ++i)
+    for(int j = 0; j <= columns; ++j)
+      v.push_back(m.add_vertex(Point((1 + 0.1 * j) * std::cos(0.2 * i), (1 + 0.1 * j) * std::sin(0.2 * i), 0)));
+  for(int i = 0; i < rows; ++i)
+    for(int j = 0; j < columns; ++j)
+      m.add_face(v[i * (columns + 1) + j], v[i * (columns + 1) + j + 1], v[(i + 1) * (columns + 1) + j + 1],
+                 v[(i + 1) * (columns + 1) + j]);
+  auto shortest_edge = [&](const TSI::Point_matrix& p) {
+    double shortest = std::numeric_limits<double>::max();
+    for(auto e : edges(m))
+      shortest = (std::min)(shortest, (p.row(int(source(e, m))) - p.row(int(target(e, m)))).norm());
+    return shortest;
+  };
+  const double input = shortest_edge(TSI::read_points(m, get(CGAL::vertex_point, m), get(CGAL::vertex_index, m)));
+  for(const std::vector<std::size_t>& label : sweeps(m, 5))
+  {
+    const TSI::Point_matrix start = start_of(m, label);
+    if(start.rows() > 0)
+      EXPECT_GE(shortest_edge(start), 0.5 * input);
   }
 }
 

@@ -375,8 +375,9 @@ public:
       if(m_clustering.candidates[i].origin == Clustering_candidate::GRID_SWEEPS)
       {
         timer.reset();
-        const int polish = num_faces(m_mesh) > sweep_polish_max_faces ? 0 : sweep_polish_iterations;
-        State solved = solved_candidate(i, np.number_of_iterations((std::min)(user_iterations, polish)));
+        const int polish = num_faces(m_mesh) > large_mesh_faces ? 0 : sweep_polish_iterations;
+        State solved = with_concurrency(
+          [&] { return solved_candidate(i, np.number_of_iterations((std::min)(user_iterations, polish))); });
         stopped = solved.optimization.stopped_by_visitor;
         if(!best_sweep || internal::is_better(solved.optimization, best_sweep->optimization))
         {
@@ -643,11 +644,8 @@ private:
   // only if it ends exact and closer. Few: a solve that leaves the exact
   // surfaces comes back to them slowly (seashell parametrization, K = 100:
   // 1.2e-6 after 30 iterations at 1k quads, 5e-6 after 300 at 10k, 1 s each
-  // there). None above sweep_polish_max_faces: there 10 iterations never
-  // ended exact (the grids of 900 to 10,000 quads measured), and at 10k
-  // they cost 9 s of a 30 s target.
+  // there). None above large_mesh_faces (defaults.h).
   static constexpr int sweep_polish_iterations = 10;
-  static constexpr std::size_t sweep_polish_max_faces = 5000;
 
   // Three times the iterations the best result took, at least 30, at most
   // the user's limit.
@@ -739,21 +737,16 @@ private:
 
   // The positions at which the sweep clustering `model` is exact
   // (sweep_start()), with its orientations re-tagged there: the ones chosen
-  // on the input for flexibility need not be those of the sweep, and on the
-  // exact shapes the best match is. Empty when there is none.
+  // on the input for flexibility need not be those of the sweep, whose
+  // quads correspond in grid order. Empty when there is none.
   internal::Point_matrix swept_start(internal::Face_clustering& model) const
   {
+    std::vector<Quad_orientation> orientation(model.orientation.size());
     const internal::Point_matrix start =
       internal::sweep_start(m_mesh, m_fim, m_vim, input_point_map(),
-                            internal::read_points(m_mesh, input_point_map(), m_vim), model.label);
-    if(start.rows() == 0)
-      return start;
-    std::vector<Point> points(m_input_points.size());
-    for(std::size_t v = 0; v < points.size(); ++v)
-      points[v] = Point(start(Eigen::Index(v), 0), start(Eigen::Index(v), 1), start(Eigen::Index(v), 2));
-    const std::vector<Panel> panels =
-      internal::face_quads(m_mesh, m_fim, parameters::vertex_point_map(Point_storage_map(points.begin(), m_vim)));
-    model.orientation = internal::cluster_shapes(panels, model.label, model.number_of_clusters, m_policy).orientation;
+                            internal::read_points(m_mesh, input_point_map(), m_vim), model.label, &orientation);
+    if(start.rows() > 0)
+      model.orientation.swap(orientation);
     return start;
   }
 

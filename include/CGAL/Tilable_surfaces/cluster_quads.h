@@ -23,7 +23,7 @@
 #include <CGAL/Tilable_surfaces/internal/Clustering/initial_clustering.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/kmeans.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/merge_costs.h>
-#include <CGAL/Tilable_surfaces/internal/Clustering/segment_candidates.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/sweep_candidates.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/strip_candidates.h>
 
 #include <CGAL/Random.h>

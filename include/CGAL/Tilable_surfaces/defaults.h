@@ -152,9 +152,17 @@ inline double default_convergence_tolerance(Solver_type solver)
 }
 
 /// \ingroup PkgTilableSurfacesRef
+/// Above this many faces, a solve from the input takes minutes and may not
+/// end exact: `default_number_of_optimized_candidates()` is 0, and a sweep
+/// clustering's exact start is not polished by the solver (10 iterations
+/// never ended exact on the grids of 900 to 10,000 quads measured, and cost
+/// 9 s at 10,000).
+constexpr std::size_t large_mesh_faces = 5000;
+
+/// \ingroup PkgTilableSurfacesRef
 /// The default of `number_of_optimized_candidates` for a mesh of
 /// `number_of_faces` quads: 2 + 10000 / `number_of_faces`, at most 12, and 0
-/// above 5000 faces.
+/// above 5000 faces (`large_mesh_faces`).
 /// Solves of small meshes take a second or less, and there the ranking of the
 /// candidates is least reliable (tunnel stand-in, 1152 quads, K = 8: the
 /// best candidate ranks 8th and ends 1.6 times closer than the first).
@@ -165,7 +173,7 @@ inline double default_convergence_tolerance(Solver_type solver)
 /// (`K_set_tilable_surface::optimize_closest()`); without one, 0 counts as 1.
 inline std::size_t default_number_of_optimized_candidates(std::size_t number_of_faces)
 {
-  if(number_of_faces > 5000)
+  if(number_of_faces > large_mesh_faces)
     return 0;
   return (std::min)(std::size_t(12), 2 + 10000 / (std::max)(number_of_faces, std::size_t(1)));
 }

@@ -32,8 +32,9 @@ struct Default_visitor
   /// iteration 0 the solver then makes no step at all. The default solver
   /// measures the congruence error only when it may meet the tolerance and
   /// every 10 iterations; in between it passes its estimate, the largest
-  /// constraint residual in mean edge lengths. `Optimization_result::converged` is always decided on the
-  /// measured value.
+  /// constraint residual in mean edge lengths.
+  /// `Optimization_result::converged` is always decided on the measured
+  /// value.
   bool iteration(int /*iteration*/, double /*congruence_error*/, double /*objective*/)
   {
     return true;

@@ -118,17 +118,20 @@ std::array<std::vector<std::size_t>, 2> quad_strips(const PolygonMesh& pm, FaceI
   return strip;
 }
 
-// Greedy merges of the clusters of `label` (S of them) down to k: each time
-// the pair whose merge spreads the input's edge lengths least
-// (Edge_sharing_graph::length_deviation_after_merge(), the S-quads matched by
-// their best correspondence), so that merged strips tie few lengths together
-// (on a tube: congruent rings first, then rings of close radii). Labels are
-// renumbered by first face. A quad cluster and a triangle cluster never
-// merge: with fewer than k clusters of one kind left, the merges stop early.
+// Greedy merges of the clusters of `label` (S of them) down to each count
+// of `targets`: each time the pair whose merge spreads the input's edge
+// lengths least (Edge_sharing_graph::length_deviation_after_merge(), the
+// S-quads matched by their best correspondence), so that merged strips tie
+// few lengths together (on a tube: congruent rings first, then rings of
+// close radii). A merge depends only on the clusters before it, so one
+// sequence serves every target. The labels at each target, renumbered by
+// first face. A quad cluster and a triangle cluster never merge: with fewer
+// than k clusters of one kind left, the merges stop early.
 template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
-void merge_strips_to(std::size_t k, const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
-                     const std::vector<Panel>& quads, Orientation_policy policy,
-                     std::vector<std::size_t>& label, std::size_t s)
+std::vector<std::vector<std::size_t> >
+merge_strips_to_each(const std::vector<std::size_t>& targets, const PolygonMesh& pm, FaceIndexMap fim,
+                     VertexPointMap vpm, const std::vector<Panel>& quads, Orientation_policy policy,
+                     const std::vector<std::size_t>& label, std::size_t s)
 {
   const Cluster_shapes shapes = cluster_shapes(quads, label, s, policy);
   Edge_sharing_graph<PolygonMesh> graph = edge_sharing_graph(pm, fim, vpm, label, shapes.orientation, s);
@@ -140,8 +143,21 @@ void merge_strips_to(std::size_t k, const PolygonMesh& pm, FaceIndexMap fim, Ver
     for(std::size_t b = a + 1; b < s; ++b)
       correspondence[a * s + b] = fast_best_match(shapes.s_quads[a], shapes.s_quads[b], policy).orientation;
   });
+  std::vector<std::vector<std::size_t> > merged(targets.size());
+  auto take = [&](std::size_t count) {
+    for(std::size_t t = 0; t < targets.size(); ++t)
+      if(merged[t].empty() && targets[t] >= count)
+      {
+        merged[t] = label;
+        for(std::size_t& l : merged[t])
+          while(parent[l] != l) l = parent[l];
+        relabel_by_first_face(merged[t]);
+      }
+  };
+  const std::size_t k = *std::min_element(targets.begin(), targets.end());
   for(std::size_t count = s; count > k; --count)
   {
+    take(count);
     double best = (std::numeric_limits<double>::max)();
     std::size_t kept = 0, removed = 0;
     for(std::size_t a = 0; a < s; ++a)
@@ -156,11 +172,8 @@ void merge_strips_to(std::size_t k, const PolygonMesh& pm, FaceIndexMap fim, Ver
     graph.merge_clusters(kept, removed, correspondence[kept * s + removed]);
     parent[removed] = kept;
   }
-  for(std::size_t& l : label)
-  {
-    while(parent[l] != l) l = parent[l];
-  }
-  relabel_by_first_face(label);
+  take(0);
+  return merged;
 }
 
 // `label` (with s clusters) brought to exactly k clusters: merged by least
@@ -172,7 +185,7 @@ void bring_to(std::size_t k, const PolygonMesh& pm, FaceIndexMap fim, VertexPoin
               std::size_t s)
 {
   if(s > k)
-    merge_strips_to(k, pm, fim, vpm, quads, policy, label, s);
+    label = merge_strips_to_each({k}, pm, fim, vpm, quads, policy, label, s)[0];
   else if(s < k)
   {
     Initial_clustering init;
@@ -210,24 +223,41 @@ strip_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, c
   for(int d = 0; d < 2; ++d)
     count[d] = triangles ? separate_kinds(quads, strips[d])
                          : 1 + *std::max_element(strips[d].begin(), strips[d].end());
+  const std::array<std::size_t, 8> group_counts{{1, 2, 3, 4, 6, 8, 12, 16}};
+  auto pair_groups = [&](int first, std::size_t b) {
+    const std::size_t a = (k + b - 1) / b;
+    return std::array<std::size_t, 2>{{first == 0 ? a : b, first == 0 ? b : a}};
+  };
+  auto skipped = [&](const std::array<std::size_t, 2>& groups) {
+    return groups[0] > count[0] || groups[1] > count[1] || (groups[0] > 1 && count[0] > max_strips) ||
+           (groups[1] > 1 && count[1] > max_strips);
+  };
+  // Per direction, the merges to every group count used, in one sequence.
+  std::array<std::vector<std::size_t>, 2> targets;
+  for(int first = 0; first < 2; ++first)
+    for(std::size_t b : group_counts)
+      if(!skipped(pair_groups(first, b)))
+        for(int d = 0; d < 2; ++d)
+          if(pair_groups(first, b)[d] > 1)
+            targets[d].push_back(pair_groups(first, b)[d]);
+  std::array<std::vector<std::vector<std::size_t> >, 2> merged;
+  for(int d = 0; d < 2; ++d)
+    if(!targets[d].empty())
+      merged[d] = merge_strips_to_each(targets[d], pm, fim, vpm, quads, policy, strips[d], count[d]);
   std::vector<std::vector<std::size_t> > result;
   for(int first = 0; first < 2; ++first)
-    for(std::size_t b : {1, 2, 3, 4, 6, 8, 12, 16})
+    for(std::size_t b : group_counts)
     {
-      const std::size_t a = (k + b - 1) / b;
-      const std::size_t groups[2] = {first == 0 ? a : b, first == 0 ? b : a};
-      if(groups[0] > count[0] || groups[1] > count[1] ||
-         (groups[0] > 1 && count[0] > max_strips) || (groups[1] > 1 && count[1] > max_strips))
+      const std::array<std::size_t, 2> groups = pair_groups(first, b);
+      if(skipped(groups))
         continue;
       std::array<std::vector<std::size_t>, 2> grouped;
       for(int d = 0; d < 2; ++d)
-      {
-        grouped[d] = strips[d];
         if(groups[d] == 1)
-          std::fill(grouped[d].begin(), grouped[d].end(), std::size_t(0));
+          grouped[d].assign(strips[d].size(), 0);
         else
-          merge_strips_to(groups[d], pm, fim, vpm, quads, policy, grouped[d], count[d]);
-      }
+          grouped[d] = merged[d][std::size_t(std::find(targets[d].begin(), targets[d].end(), groups[d]) -
+                                             targets[d].begin())];
       // (Without triangles, grouped[1] is below groups[1].)
       const std::size_t columns = 1 + *std::max_element(grouped[1].begin(), grouped[1].end());
       std::vector<std::size_t> label(strips[0].size());

@@ -15,6 +15,7 @@
 // input the result left.
 
 #include <CGAL/Tilable_surfaces/internal/Tilable_problem.h>
+#include <CGAL/Tilable_surfaces/internal/parallel_for.h>
 
 #include <CGAL/AABB_traits.h>
 #include <CGAL/AABB_tree.h>
@@ -57,33 +58,40 @@ inline Distance_summary one_sided_distance(const Tilable_problem& problem,
   Tree tree(triangles.begin(), triangles.end());
   tree.accelerate_distance_queries();
 
-  Distance_summary s;
-  std::size_t count = 0;
-  auto sample = [&](const Eigen::Vector3d& p) {
-    const double d = std::sqrt(tree.squared_distance(point(p)));
-    s.max = (std::max)(s.max, d);
-    s.mean += d;
-    ++count;
-  };
+  auto distance = [&](const Eigen::Vector3d& p) { return std::sqrt(tree.squared_distance(point(p))); };
   // The vertices of the faces: an isolated vertex is no part of the surface.
   std::vector<bool> on_surface(std::size_t(sampled.rows()), false);
   for(const auto& corners : problem.face_corners)
     for(int v : corners)
       if(v >= 0) on_surface[std::size_t(v)] = true;
-  for(Eigen::Index v = 0; v < sampled.rows(); ++v)
-    if(on_surface[std::size_t(v)])
-      sample(sampled.row(v).transpose());
-  for(std::size_t f = 0; f < problem.face_corners.size(); ++f)
-  {
+  // Distances by slot, in parallel, summed in slot order afterwards: the
+  // same mean whatever the threads. A face has at most 1 + 2 * 4 samples.
+  const std::size_t vertices = std::size_t(sampled.rows()), per_face = 9;
+  std::vector<double> d(vertices + per_face * problem.face_corners.size(), -1.0);
+  parallel_for(vertices, [&](std::size_t v) {
+    if(on_surface[v])
+      d[v] = distance(sampled.row(Eigen::Index(v)).transpose());
+  });
+  parallel_for(problem.face_corners.size(), [&](std::size_t f) {
     const Panel q = instance(problem, sampled, f);
     const Eigen::Vector3d centre = q.centroid();
-    sample(centre);
+    double* slot = &d[vertices + per_face * f];
+    *slot++ = distance(centre);
     for(int i = 0; i < q.size(); ++i)
     {
-      sample(0.5 * (q[i] + q[(i + 1) % q.size()]));
-      sample((q[i] + q[(i + 1) % q.size()] + centre) / 3.0);
+      *slot++ = distance(0.5 * (q[i] + q[(i + 1) % q.size()]));
+      *slot++ = distance((q[i] + q[(i + 1) % q.size()] + centre) / 3.0);
     }
-  }
+  });
+  Distance_summary s;
+  std::size_t count = 0;
+  for(double x : d)
+    if(x >= 0)
+    {
+      s.max = (std::max)(s.max, x);
+      s.mean += x;
+      ++count;
+    }
   s.mean /= double(count);
   return s;
 }

@@ -4,28 +4,20 @@
 #ifndef CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_SWEEP_START_H
 #define CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_SWEEP_START_H
 
-// An exact starting point for the clusterings of a quad grid whose clusters
-// each lie in one column (sweep_clusterings() in segment_candidates.h).
-//
-// On a grid, rows of quads between the rings of vertices 0..R, let every
-// ring be the image of the one before under a rigid motion M_i that is the
-// same for all the rows of a run: ring_{i+1} = M_i ring_i. Then the quad of
-// column c in row i + 1 is M_i applied to the one in row i, so every column
-// of a run is congruent quad by quad, in grid order: a swept surface of one
-// section (a piece of a screw sweep per run). Such a surface is exact for
-// any clustering whose clusters lie in one column of one run, whatever the
-// input. The Gauss-Newton solver, started at the input, does not find it on
-// large grids (10k seashell, K = 100: stalls near 3e-3, user manual, section
-// Optimization): the section must stop growing, a large and coherent move.
-// Built directly it costs O(F):
+// An exact starting point for the sweep clusterings of a quad grid
+// (sweep_clusterings() in sweep_candidates.h, which says why they are
+// exact). The Gauss-Newton solver, started at the input, does not find
+// such surfaces on large grids (10k seashell, K = 100: stalls near 3e-3,
+// user manual, section Optimization): the section must stop growing, a
+// large and coherent move. Built directly it costs O(F):
 // - M_i of a run: the rigid motion that best maps its rings onto the next
 //   ones (Umeyama, no scale), stacked;
 // - the section: the mean of the input rings pulled back to the middle ring
-//   by the composed motions;
+//   by the composed motions, its column runs put on their helices;
 // - the rings: the section pushed forward again, the whole then rigidly
 //   aligned with the input.
 
-#include <CGAL/Tilable_surfaces/internal/Clustering/segment_candidates.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/sweep_candidates.h>
 #include <CGAL/Tilable_surfaces/internal/Tilable_problem.h>
 
 #include <Eigen/Geometry>
@@ -37,71 +29,25 @@ namespace CGAL {
 namespace Tilable_surfaces {
 namespace internal {
 
-// The rings of vertex indices of `grid` (rows + 1 of them, each of columns
-// vertices, one more when the rows are open), in grid order: the quad of
-// row r and column c has its corners on rings r and r + 1 at positions c
-// and c + 1. Empty when the rows do not share rings as a grid does, or the
-// grid is closed across its rows (the first ring is the last).
-template <typename PolygonMesh, typename FaceIndexMap, typename VertexIndexMap>
-std::vector<std::vector<std::size_t> > grid_rings(const PolygonMesh& pm, FaceIndexMap fim, VertexIndexMap vim,
-                                                  const Quad_grid& grid)
-{
-  typedef typename boost::graph_traits<PolygonMesh>::face_descriptor face_descriptor;
-  typedef typename boost::graph_traits<PolygonMesh>::halfedge_descriptor halfedge_descriptor;
-  const std::size_t rows = grid.rows, columns = grid.columns;
-  if(closed_across_rows(grid))
-    return {};
-  std::vector<face_descriptor> face_of(num_faces(pm));
-  for(face_descriptor f : faces(pm))
-    face_of[get(fim, f)] = f;
-  auto corner = [&](std::size_t r, std::size_t c, int i) {
-    const std::size_t f = grid.face_at[r * columns + c];
-    halfedge_descriptor h = halfedge(face_of[f], pm);
-    for(int k = 0; k < grid.corner_offset[f] + i; ++k)
-      h = next(h, pm);
-    return std::size_t(get(vim, target(h, pm)));
-  };
-  // Corners 0 and 1 of every face of a row lie on one ring, 3 and 2 on the
-  // other; corner 0 of column c is corner 1 of column c + 1.
-  const bool closed = corner(0, columns - 1, 0) == corner(0, 0, 1);
-  auto ring = [&](std::size_t r, int first, int last) {
-    std::vector<std::size_t> v;
-    for(std::size_t c = 0; c < columns; ++c)
-      v.push_back(corner(r, c, first));
-    if(!closed)
-      v.push_back(corner(r, columns - 1, last));
-    return v;
-  };
-  std::vector<std::vector<std::size_t> > side_a(rows), side_b(rows);
-  for(std::size_t r = 0; r < rows; ++r)
-  {
-    side_a[r] = ring(r, 1, 0);
-    side_b[r] = ring(r, 2, 3);
-  }
-  std::vector<std::vector<std::size_t> > rings;
-  for(int flip = 0; flip < 2 && rings.empty(); ++flip)
-  {
-    const std::vector<std::vector<std::size_t> >& first = flip ? side_b : side_a;
-    const std::vector<std::vector<std::size_t> >& second = flip ? side_a : side_b;
-    bool shared = true;
-    for(std::size_t r = 0; r + 1 < rows && shared; ++r)
-      shared = second[r] == first[r + 1];
-    if(!shared)
-      continue;
-    rings.push_back(first[0]);
-    rings.insert(rings.end(), second.begin(), second.end());
-  }
-  return rings;
-}
-
 // Positions, by vertex index, at which the clustering `label` (by face
 // index) is exact, as described above; an empty matrix when the quads do
 // not form a grid whose every cluster lies in one column and one run of
-// rows. `points` are the input positions by vertex index.
+// rows, or in one run of columns of a single run of rows. `points` are the
+// input positions by vertex index. `orientation`, if given, receives the
+// orientation of every face (by face index) at which the clusters' quads
+// correspond corner by corner there, in grid order: exact, where a best
+// match on the swept shapes would pick among the symmetries of a
+// symmetric quad by round-off.
 template <typename PolygonMesh, typename FaceIndexMap, typename VertexIndexMap, typename VertexPointMap>
 Point_matrix sweep_start(const PolygonMesh& pm, FaceIndexMap fim, VertexIndexMap vim, VertexPointMap vpm,
-                         const Point_matrix& points, const std::vector<std::size_t>& label)
+                         const Point_matrix& points, const std::vector<std::size_t>& label,
+                         std::vector<Quad_orientation>* orientation = nullptr)
 {
+  typedef typename boost::graph_traits<PolygonMesh>::face_descriptor face_descriptor;
+  typedef typename boost::graph_traits<PolygonMesh>::halfedge_descriptor halfedge_descriptor;
+  std::vector<face_descriptor> face_of(num_faces(pm));
+  for(face_descriptor f : faces(pm))
+    face_of[get(fim, f)] = f;
   const std::array<std::vector<std::size_t>, 2> strips = quad_strips(pm, fim);
   for(int row_direction = 0; row_direction < 2; ++row_direction)
   {
@@ -119,10 +65,11 @@ Point_matrix sweep_start(const PolygonMesh& pm, FaceIndexMap fim, VertexIndexMap
         tied = label_at(r, c) == label_at(r - 1, c);
       run_of[r] = run_of[r - 1] + (tied ? 0 : 1);
     }
-    // Every cluster in one column and one run.
+    // Every cluster in one column and one run, or one run of rows whose
+    // clusters are runs of columns (screw_column_runs()).
     const std::size_t k = *std::max_element(label.begin(), label.end()) + 1;
     std::vector<std::size_t> column_of(k, no_index()), run_of_cluster(k, no_index());
-    bool fits = true;
+    bool fits = true, column_runs = false;
     for(std::size_t r = 0; r < rows && fits; ++r)
       for(std::size_t c = 0; c < columns && fits; ++c)
       {
@@ -134,9 +81,25 @@ Point_matrix sweep_start(const PolygonMesh& pm, FaceIndexMap fim, VertexIndexMap
         }
         fits = column_of[l] == c && run_of_cluster[l] == run_of[r];
       }
-    if(!fits)
+    std::vector<std::size_t> run_of_column(columns);
+    for(std::size_t c = 0; c < columns; ++c)
+      run_of_column[c] = label_at(0, c);
+    if(!fits && run_of.back() == 0)
+    {
+      column_runs = true;
+      for(std::size_t r = 1; r < rows && column_runs; ++r)
+        for(std::size_t c = 0; c < columns && column_runs; ++c)
+          column_runs = label_at(r, c) == run_of_column[c];
+    }
+    if(!fits && !column_runs)
       continue;
-    const std::vector<std::vector<std::size_t> > rings = grid_rings(pm, fim, vim, grid);
+    const std::vector<std::vector<std::size_t> > rings = grid_rings(grid, [&](std::size_t r, std::size_t c, int i) {
+      const std::size_t f = grid.face_at[r * columns + c];
+      halfedge_descriptor h = halfedge(face_of[f], pm);
+      for(int j = 0; j < grid.corner_offset[f] + i; ++j)
+        h = next(h, pm);
+      return std::size_t(get(vim, target(h, pm)));
+    });
     if(rings.empty())
       continue;
     const Eigen::Index width = Eigen::Index(rings[0].size());
@@ -144,48 +107,22 @@ Point_matrix sweep_start(const PolygonMesh& pm, FaceIndexMap fim, VertexIndexMap
     for(std::size_t i = 0; i <= rows; ++i)
       for(Eigen::Index j = 0; j < width; ++j)
         ring[i].col(j) = points.row(Eigen::Index(rings[i][std::size_t(j)])).transpose();
-    // The motion of each run.
-    const std::size_t runs = run_of.back() + 1;
-    std::vector<Eigen::Matrix4d> motion(runs);
-    for(std::size_t s = 0, a = 0; s < runs; ++s)
-    {
-      std::size_t b = a;
-      while(b < rows && run_of[b] == s)
-        ++b;
-      Eigen::Matrix3Xd from(3, width * Eigen::Index(b - a)), to(3, width * Eigen::Index(b - a));
-      for(std::size_t i = a; i < b; ++i)
-      {
-        from.middleCols(width * Eigen::Index(i - a), width) = ring[i];
-        to.middleCols(width * Eigen::Index(i - a), width) = ring[i + 1];
-      }
-      motion[s] = Eigen::umeyama(from, to, false);
-      a = b;
-    }
-    // frame[i] maps the middle ring's frame to ring i's.
-    const std::size_t middle = rows / 2;
-    std::vector<Eigen::Matrix4d> frame(rows + 1, Eigen::Matrix4d::Identity());
-    for(std::size_t i = middle; i < rows; ++i)
-      frame[i + 1] = motion[run_of[i]] * frame[i];
-    for(std::size_t i = middle; i > 0; --i)
-      frame[i - 1] = motion[run_of[i - 1]].inverse() * frame[i];
-    auto apply = [](const Eigen::Matrix4d& m, const Eigen::Matrix3Xd& x) -> Eigen::Matrix3Xd {
-      return (m.topLeftCorner<3, 3>() * x).colwise() + m.topRightCorner<3, 1>();
-    };
-    Eigen::Matrix3Xd section = Eigen::Matrix3Xd::Zero(3, width);
+    Swept_section swept = swept_section(ring, run_of, column_runs);
+    if(column_runs && !fit_screw_column_runs(swept.section, swept.motion[0], run_of_column))
+      continue;
+    const Eigen::Matrix3Xd surface = swept.swept();
+    Eigen::Matrix3Xd input(3, width * Eigen::Index(rows + 1));
     for(std::size_t i = 0; i <= rows; ++i)
-      section += apply(frame[i].inverse(), ring[i]);
-    section /= double(rows + 1);
-    Eigen::Matrix3Xd swept(3, width * Eigen::Index(rows + 1)), input(3, width * Eigen::Index(rows + 1));
-    for(std::size_t i = 0; i <= rows; ++i)
-    {
-      swept.middleCols(width * Eigen::Index(i), width) = apply(frame[i], section);
       input.middleCols(width * Eigen::Index(i), width) = ring[i];
-    }
-    const Eigen::Matrix3Xd aligned = apply(Eigen::umeyama(swept, input, false), swept);
+    const Eigen::Matrix3Xd aligned = apply_motion(Eigen::umeyama(surface, input, false), surface);
     Point_matrix start = points;
     for(std::size_t i = 0; i <= rows; ++i)
       for(Eigen::Index j = 0; j < width; ++j)
         start.row(Eigen::Index(rings[i][std::size_t(j)])) = aligned.col(width * Eigen::Index(i) + j).transpose();
+    // Corner i in grid order is the face's vertex corner_offset + i.
+    if(orientation != nullptr)
+      for(std::size_t f = 0; f < grid.corner_offset.size(); ++f)
+        (*orientation)[f] = Quad_orientation(grid.corner_offset[f] % 4);
     return start;
   }
   return Point_matrix();

@@ -1,0 +1,501 @@
+// Copyright (c) 2026 Tilable_surfaces contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_SWEEP_CANDIDATES_H
+#define CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_SWEEP_CANDIDATES_H
+
+// Sweep clusterings of quad grids, and the swept surfaces at which they are
+// exact (built by sweep_start.h).
+//
+// On a grid, rows of quads between the rings of vertices 0..R, let every
+// ring be the image of the one before under a rigid motion M_s that is the
+// same for all the rows of a run s: then the quad of column c in row i + 1
+// is M_s applied to the one in row i, and every column of a run is one mold.
+//
+// With more columns than molds (the 100k seashell: 316 quads per ring,
+// K = 100), one run of rows takes the whole grid, and its columns are cut
+// into K runs of consecutive columns, each one mold: the section's vertices
+// of a column run are put on a helix about M's axis, with equal steps,
+// p_{c+1} = C p_c for a screw C about that axis (a translation when M is
+// one). C commutes with M, so C maps quad c of every ring onto quad c + 1.
+// A piece of the section keeps its place where it runs at a constant
+// distance from the axis; single columns take the rest. The runs are chosen
+// by dynamic programming with the least squared move of the section.
+
+#include <CGAL/Tilable_surfaces/internal/Clustering/segment_candidates.h>
+
+#include <Eigen/Geometry>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <vector>
+
+namespace CGAL {
+namespace Tilable_surfaces {
+namespace internal {
+
+// Whether the last row of `grid` meets the first (a torus): no sweep closes
+// up on itself. The first quad of the last row then shares its corners with
+// the first quad of the first row, beyond the edge that two rows share
+// anyway when there are only two.
+inline bool closed_across_rows(const Quad_grid& grid)
+{
+  const Panel& first = grid.corners[grid.face_at[0]];
+  const Panel& last = grid.corners[grid.face_at[(grid.rows - 1) * grid.columns]];
+  int shared = 0;
+  for(const Eigen::Vector3d& p : first)
+    shared += int(std::count(last.begin(), last.end(), p) > 0);
+  return shared > (grid.rows == 2 ? 2 : 0);
+}
+
+// The rings of `grid` (rows + 1 of them, each of columns vertices, one more
+// when the rows are open), in grid order, as given by `corner(r, c, i)`: a
+// vertex index or a point of corner i of the quad of row r and column c.
+// The quad of row r and column c has its corners on rings r and r + 1 at
+// positions c and c + 1. Empty when the rows do not share rings as a grid
+// does, or the grid is closed across its rows (the first ring is the last).
+template <typename Corner>
+auto grid_rings(const Quad_grid& grid, Corner corner)
+  -> std::vector<std::vector<decltype(corner(std::size_t(0), std::size_t(0), 0))> >
+{
+  typedef std::vector<decltype(corner(std::size_t(0), std::size_t(0), 0))> Ring;
+  const std::size_t rows = grid.rows, columns = grid.columns;
+  if(rows == 0 || closed_across_rows(grid))
+    return {};
+  // Corners 0 and 1 of every face of a row lie on one ring, 3 and 2 on the
+  // other; corner 0 of column c is corner 1 of column c + 1.
+  const bool closed = corner(0, columns - 1, 0) == corner(0, 0, 1);
+  auto ring = [&](std::size_t r, int first, int last) {
+    Ring v;
+    for(std::size_t c = 0; c < columns; ++c)
+      v.push_back(corner(r, c, first));
+    if(!closed)
+      v.push_back(corner(r, columns - 1, last));
+    return v;
+  };
+  std::vector<Ring> side_a(rows), side_b(rows);
+  for(std::size_t r = 0; r < rows; ++r)
+  {
+    side_a[r] = ring(r, 1, 0);
+    side_b[r] = ring(r, 2, 3);
+  }
+  std::vector<Ring> rings;
+  for(int flip = 0; flip < 2 && rings.empty(); ++flip)
+  {
+    const std::vector<Ring>& first = flip ? side_b : side_a;
+    const std::vector<Ring>& second = flip ? side_a : side_b;
+    bool shared = true;
+    for(std::size_t r = 0; r + 1 < rows && shared; ++r)
+      shared = second[r] == first[r + 1];
+    if(!shared)
+      continue;
+    rings.push_back(first[0]);
+    rings.insert(rings.end(), second.begin(), second.end());
+  }
+  return rings;
+}
+
+inline Eigen::Matrix3Xd apply_motion(const Eigen::Matrix4d& m, const Eigen::Matrix3Xd& x)
+{
+  return (m.topLeftCorner<3, 3>() * x).colwise() + m.topRightCorner<3, 1>();
+}
+
+// A swept surface close to the rings of a grid: per run of rows the rigid
+// motion that best maps its rings onto the next ones (Umeyama, no scale),
+// and the section, the mean of the rings pulled back to the middle ring.
+struct Swept_section
+{
+  std::vector<std::size_t> run_of;      // per row
+  std::vector<Eigen::Matrix4d> motion;  // per run
+  std::vector<Eigen::Matrix4d> frame;   // per ring: the middle ring's to its own
+  Eigen::Matrix3Xd section;             // in the middle ring's frame
+
+  // The rings of the swept surface, side by side.
+  Eigen::Matrix3Xd swept() const
+  {
+    const Eigen::Index width = section.cols();
+    Eigen::Matrix3Xd x(3, width * Eigen::Index(frame.size()));
+    for(std::size_t i = 0; i < frame.size(); ++i)
+      x.middleCols(width * Eigen::Index(i), width) = apply_motion(frame[i], section);
+    return x;
+  }
+};
+
+// Below this angle (radians) the motion of a one-run sweep with column runs
+// is taken as its translation: the helices' axis would be far away and
+// ill-conditioned, and a translation commutes with the straight runs.
+constexpr double screw_angle_min = 1e-6;
+
+// `ring`: the input rings, `run_of`: the run of each row. With
+// `column_runs`, a single run whose motion hardly turns is made a translation
+// (screw_angle_min).
+inline Swept_section swept_section(const std::vector<Eigen::Matrix3Xd>& ring, const std::vector<std::size_t>& run_of,
+                                   bool column_runs)
+{
+  Swept_section s;
+  s.run_of = run_of;
+  const std::size_t rows = run_of.size(), runs = run_of.back() + 1;
+  const Eigen::Index width = ring[0].cols();
+  s.motion.resize(runs);
+  for(std::size_t r = 0, a = 0; r < runs; ++r)
+  {
+    std::size_t b = a;
+    while(b < rows && run_of[b] == r)
+      ++b;
+    Eigen::Matrix3Xd from(3, width * Eigen::Index(b - a)), to(3, width * Eigen::Index(b - a));
+    for(std::size_t i = a; i < b; ++i)
+    {
+      from.middleCols(width * Eigen::Index(i - a), width) = ring[i];
+      to.middleCols(width * Eigen::Index(i - a), width) = ring[i + 1];
+    }
+    s.motion[r] = Eigen::umeyama(from, to, false);
+    a = b;
+  }
+  if(column_runs && Eigen::AngleAxisd(Eigen::Matrix3d(s.motion[0].topLeftCorner<3, 3>())).angle() < screw_angle_min)
+    s.motion[0].topLeftCorner<3, 3>().setIdentity();
+  const std::size_t middle = rows / 2;
+  s.frame.assign(rows + 1, Eigen::Matrix4d::Identity());
+  for(std::size_t i = middle; i < rows; ++i)
+    s.frame[i + 1] = s.motion[run_of[i]] * s.frame[i];
+  for(std::size_t i = middle; i > 0; --i)
+    s.frame[i - 1] = s.motion[run_of[i - 1]].inverse() * s.frame[i];
+  s.section = Eigen::Matrix3Xd::Zero(3, width);
+  for(std::size_t i = 0; i <= rows; ++i)
+    s.section += apply_motion(s.frame[i].inverse(), ring[i]);
+  s.section /= double(rows + 1);
+  return s;
+}
+
+// Coordinates about the axis of a screw motion: (radius, angle, height), or
+// the Cartesian ones when the motion is a translation.
+class Screw_coordinates
+{
+public:
+  explicit Screw_coordinates(const Eigen::Matrix4d& m)
+  {
+    const Eigen::AngleAxisd turn(Eigen::Matrix3d(m.topLeftCorner<3, 3>()));
+    m_translation = turn.angle() < screw_angle_min;
+    if(m_translation)
+      return;
+    m_axis = turn.axis();
+    m_e1 = m_axis.unitOrthogonal();
+    m_e2 = m_axis.cross(m_e1);
+    // The axis point in the plane through the origin: (I - R) o = t - (t.a) a.
+    Eigen::Matrix<double, 3, 2> e;
+    e << m_e1, m_e2;
+    const Eigen::Matrix3d i_minus_r = Eigen::Matrix3d::Identity() - m.topLeftCorner<3, 3>();
+    const Eigen::Vector3d t = m.topRightCorner<3, 1>();
+    const Eigen::Vector2d o = (e.transpose() * i_minus_r * e).lu().solve(e.transpose() * (t - t.dot(m_axis) * m_axis));
+    m_origin = e * o;
+  }
+
+  bool is_translation() const { return m_translation; }
+
+  Eigen::Vector3d to(const Eigen::Vector3d& p) const
+  {
+    if(m_translation)
+      return p;
+    const Eigen::Vector3d v = p - m_origin;
+    const double x = v.dot(m_e1), y = v.dot(m_e2);
+    return Eigen::Vector3d(std::hypot(x, y), std::atan2(y, x), v.dot(m_axis));
+  }
+
+  Eigen::Vector3d from(const Eigen::Vector3d& q) const
+  {
+    if(m_translation)
+      return q;
+    return m_origin + q(0) * (std::cos(q(1)) * m_e1 + std::sin(q(1)) * m_e2) + q(2) * m_axis;
+  }
+
+private:
+  bool m_translation = true;
+  Eigen::Vector3d m_origin = Eigen::Vector3d::Zero(), m_axis, m_e1, m_e2;
+};
+
+// The section's vertices first..first + length (indices modulo its width)
+// moved onto a helix of equal steps about the axis of `coordinates`: the
+// least-squares line in (angle, height) at the mean radius, or a line of
+// equal steps for a translation.
+inline Eigen::Matrix3Xd screw_run(const Eigen::Matrix3Xd& section, const Screw_coordinates& coordinates,
+                                  std::size_t first, std::size_t length)
+{
+  const Eigen::Index n = Eigen::Index(length) + 1, width = section.cols();
+  Eigen::Matrix3Xd q(3, n);
+  for(Eigen::Index j = 0; j < n; ++j)
+  {
+    q.col(j) = coordinates.to(section.col((Eigen::Index(first) + j) % width));
+    // Unwrapped angles.
+    if(j > 0 && !coordinates.is_translation())
+      q(1, j) -= 2 * CGAL_PI * std::round((q(1, j) - q(1, j - 1)) / (2 * CGAL_PI));
+  }
+  const Eigen::ArrayXd t = Eigen::ArrayXd::LinSpaced(n, 0, double(n - 1)) - double(n - 1) / 2;
+  for(int d = 0; d < 3; ++d)
+  {
+    const double mean = q.row(d).mean();
+    if(d == 0 && !coordinates.is_translation())
+      q.row(d).setConstant(mean);
+    else
+      q.row(d) = (mean + t * ((q.row(d).array() - mean) * t.transpose()).sum() / (t * t).sum()).matrix().transpose();
+  }
+  Eigen::Matrix3Xd p(3, n);
+  for(Eigen::Index j = 0; j < n; ++j)
+    p.col(j) = coordinates.from(q.col(j));
+  return p;
+}
+
+// screw_column_runs() with the ring opened at column `cut` (left alone
+// when the ring is closed), given `cost[c * (longest + 1) + l]`, the move of
+// the run of l columns from column c; `total` is set to the least move.
+inline std::vector<std::size_t> screw_column_runs_from(const std::vector<double>& cost, std::size_t longest,
+                                                       std::size_t columns, std::size_t groups, bool closed,
+                                                       std::size_t cut, double& total)
+{
+  const double infinity = (std::numeric_limits<double>::max)();
+  // best[(p * (groups + 1) + g) * 2 + m]: the first p columns from the cut in
+  // g runs, the last of several columns when m.
+  auto state = [groups](std::size_t p, std::size_t g, int m) { return (p * (groups + 1) + g) * 2 + std::size_t(m); };
+  std::vector<double> best((columns + 1) * (groups + 1) * 2, infinity);
+  std::vector<std::size_t> from(best.size(), 0);
+  best[closed ? state(1, 1, 0) : state(0, 0, 0)] = 0;
+  for(std::size_t p = closed ? 1 : 0; p < columns; ++p)
+    for(std::size_t g = 0; g < groups; ++g)
+      for(int m = 0; m < 2; ++m)
+      {
+        const double here = best[state(p, g, m)];
+        if(here == infinity)
+          continue;
+        for(std::size_t l = 1; l <= longest && p + l <= columns; ++l)
+        {
+          if(l > 1 && m == 1)
+            break;
+          const double run = l == 1 ? 0. : cost[((cut + p) % columns) * (longest + 1) + l];
+          const std::size_t next = state(p + l, g + 1, l > 1 ? 1 : 0);
+          if(here + run < best[next])
+          {
+            best[next] = here + run;
+            from[next] = state(p, g, m);
+          }
+        }
+      }
+  std::size_t s = best[state(columns, groups, 1)] < best[state(columns, groups, 0)] ? state(columns, groups, 1)
+                                                                                      : state(columns, groups, 0);
+  total = best[s];
+  if(total == infinity)
+    return {};
+  std::vector<std::size_t> run_of_column(columns, 0);
+  for(std::size_t g = groups; s != state(0, 0, 0) && s != state(1, 1, 0); --g)
+  {
+    const std::size_t end = s / 2 / (groups + 1), start = from[s] / 2 / (groups + 1);
+    for(std::size_t p = start; p < end; ++p)
+      run_of_column[(cut + p) % columns] = g - 1;
+    s = from[s];
+  }
+  return run_of_column;
+}
+
+// The columns of a one-run sweep cut into exactly `groups` runs of
+// consecutive columns, with the least squared move of the section's vertices
+// onto their runs' helices (screw_run()); two runs of several columns never
+// meet, since they would share a vertex. The run of every column, numbered
+// along the ring; empty when no such cut exists. A closed ring is opened at
+// a column left alone: of the three whose vertices bend most (the cost of a
+// run of two columns through each), the one with the least total move.
+inline std::vector<std::size_t> screw_column_runs(const Eigen::Matrix3Xd& section, const Eigen::Matrix4d& motion,
+                                                  std::size_t columns, std::size_t groups)
+{
+  const bool closed = std::size_t(section.cols()) == columns;
+  if(groups == 0 || groups > columns || columns < 3)
+    return {};
+  const Screw_coordinates coordinates(motion);
+  // Runs of at most half the ring, and O(columns^3 / 8) work at most ~1e8.
+  const std::size_t longest =
+    (std::max)(std::size_t(2), (std::min)(columns / 2, std::size_t(std::sqrt(1e8 / double(columns)))));
+  const double infinity = (std::numeric_limits<double>::max)();
+  // cost[c * (longest + 1) + l]: the run of l columns from column c; none
+  // when its steps shrink to less than half their mean length (a section
+  // running straight away from the axis would collapse onto one point).
+  std::vector<double> cost(columns * (longest + 1), infinity);
+  for(std::size_t c = 0; c < columns; ++c)
+    for(std::size_t l = 2; l <= longest && (closed || c + l <= columns); ++l)
+    {
+      const Eigen::Matrix3Xd fit = screw_run(section, coordinates, c, l);
+      double sum = 0, length = 0;
+      for(Eigen::Index j = 0; j < fit.cols(); ++j)
+      {
+        const Eigen::Index v = (Eigen::Index(c) + j) % section.cols();
+        sum += (fit.col(j) - section.col(v)).squaredNorm();
+        if(j > 0)
+          length += (section.col(v) - section.col((v + section.cols() - 1) % section.cols())).norm();
+      }
+      if((fit.col(1) - fit.col(0)).norm() >= 0.5 * length / double(l))
+        cost[c * (longest + 1) + l] = sum;
+    }
+  std::vector<std::size_t> cuts(1, 0);
+  if(closed)
+  {
+    // The bend at vertex c: a run of the two columns around it.
+    auto bend = [&](std::size_t c) { return cost[((c + columns - 1) % columns) * (longest + 1) + 2]; };
+    cuts.resize(columns);
+    std::iota(cuts.begin(), cuts.end(), std::size_t(0));
+    std::stable_sort(cuts.begin(), cuts.end(), [&](std::size_t a, std::size_t b) {
+      return bend(a) + bend((a + 1) % columns) > bend(b) + bend((b + 1) % columns);
+    });
+    cuts.resize((std::min)(cuts.size(), std::size_t(3)));
+  }
+  double least = infinity;
+  std::vector<std::size_t> result;
+  for(std::size_t cut : cuts)
+  {
+    double total = infinity;
+    std::vector<std::size_t> runs = screw_column_runs_from(cost, longest, columns, groups, closed, cut, total);
+    if(total < least)
+    {
+      least = total;
+      result.swap(runs);
+    }
+  }
+  return result;
+}
+
+// The section of a one-run sweep moved onto the helices of its column runs:
+// `run_of_column` numbers them, each a set of consecutive columns. False,
+// and the section unchanged, when a run is not one set of consecutive
+// columns or takes the whole of a closed ring.
+inline bool fit_screw_column_runs(Eigen::Matrix3Xd& section, const Eigen::Matrix4d& motion,
+                                  const std::vector<std::size_t>& run_of_column)
+{
+  const std::size_t columns = run_of_column.size();
+  const bool closed = std::size_t(section.cols()) == columns;
+  // Start at a column that begins a run.
+  std::size_t start = 0;
+  if(closed)
+  {
+    while(start < columns && run_of_column[start] == run_of_column[(start + columns - 1) % columns])
+      ++start;
+    if(start == columns)
+      return false;
+  }
+  std::vector<std::pair<std::size_t, std::size_t> > runs;  // first column, length
+  std::vector<bool> seen(*std::max_element(run_of_column.begin(), run_of_column.end()) + 1, false);
+  for(std::size_t p = 0; p < columns;)
+  {
+    const std::size_t c = (start + p) % columns, r = run_of_column[c];
+    if(seen[r])
+      return false;
+    seen[r] = true;
+    std::size_t l = 1;
+    while(p + l < columns && run_of_column[(c + l) % columns] == r)
+      ++l;
+    runs.emplace_back(c, l);
+    p += l;
+  }
+  const Screw_coordinates coordinates(motion);
+  Eigen::Matrix3Xd fitted = section;
+  for(const std::pair<std::size_t, std::size_t>& run : runs)
+    if(run.second > 1)
+    {
+      const Eigen::Matrix3Xd p = screw_run(section, coordinates, run.first, run.second);
+      for(Eigen::Index j = 0; j < p.cols(); ++j)
+        fitted.col((Eigen::Index(run.first) + j) % section.cols()) = p.col(j);
+    }
+  section = fitted;
+  return true;
+}
+
+// The one-run sweep clustering of `grid` whose columns are cut into k screw
+// column runs; empty when there is none.
+inline std::vector<std::size_t> screw_column_sweep(const Quad_grid& grid, std::size_t k)
+{
+  const std::size_t rows = grid.rows, columns = grid.columns;
+  const std::vector<std::vector<Eigen::Vector3d> > rings =
+    grid_rings(grid, [&](std::size_t r, std::size_t c, int i) {
+      return Eigen::Vector3d(grid.corners[grid.face_at[r * columns + c]][i]);
+    });
+  if(rings.empty())
+    return {};
+  std::vector<Eigen::Matrix3Xd> ring(rings.size(), Eigen::Matrix3Xd(3, Eigen::Index(rings[0].size())));
+  for(std::size_t i = 0; i < rings.size(); ++i)
+    for(std::size_t j = 0; j < rings[i].size(); ++j)
+      ring[i].col(Eigen::Index(j)) = rings[i][j];
+  const Swept_section swept = swept_section(ring, std::vector<std::size_t>(rows, 0), true);
+  const std::vector<std::size_t> run_of_column = screw_column_runs(swept.section, swept.motion[0], columns, k);
+  if(run_of_column.empty())
+    return {};
+  std::vector<std::size_t> label(grid.face_at.size());
+  for(std::size_t r = 0; r < rows; ++r)
+    for(std::size_t c = 0; c < columns; ++c)
+      label[grid.face_at[r * columns + c]] = run_of_column[c];
+  relabel_by_first_face(label);
+  return label;
+}
+
+// Sweep clusterings with k clusters: the rows cut into the k / columns runs
+// of least spread, every column of a run one mold, and the k mod columns
+// molds left split the columns of the longest run in two at its middle row.
+// Each is exact at a swept surface built directly (sweep_start.h), which the
+// segments of several groups above are not: it freezes the section's size
+// and shape, and keeps its bends and twists. With more columns than k, one
+// run of rows whose columns are cut into k screw column runs (see above).
+// One per grid direction; none when the grid is closed both ways or the
+// leftover molds cannot be placed.
+template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
+std::vector<std::vector<std::size_t> >
+sweep_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, std::size_t k,
+                  Orientation_policy policy)
+{
+  std::vector<std::vector<std::size_t> > result;
+  const std::array<std::vector<std::size_t>, 2> strips = quad_strips(pm, fim);
+  for(int row_direction = 0; row_direction < 2; ++row_direction)
+  {
+    const Quad_grid grid = quad_grid(pm, fim, vpm, strips, row_direction);
+    const std::size_t rows = grid.rows, columns = grid.columns;
+    if(rows == 0 || closed_across_rows(grid))
+      continue;
+    if(columns > k)
+    {
+      std::vector<std::size_t> label = screw_column_sweep(grid, k);
+      if(!label.empty())
+        result.push_back(label);
+      continue;
+    }
+    const std::size_t runs = (std::min)(rows, k / columns), left = k - runs * columns;
+    if(double(rows) * double(rows) * double(runs) > 1e8)
+      continue;
+    std::vector<std::size_t> all_columns(columns);
+    std::iota(all_columns.begin(), all_columns.end(), std::size_t(0));
+    const Run_option option = run_option(grid, all_columns, columns, policy);
+    std::vector<std::size_t> label = best_runs(grid, {&option}, runs * columns, true);
+    if(label.empty())
+      continue;
+    // Where the runs start: a new run gives column 0 a new cluster.
+    std::vector<std::size_t> first_row(1, 0);
+    for(std::size_t r = 1; r < rows; ++r)
+      if(label[grid.face_at[r * columns]] != label[grid.face_at[(r - 1) * columns]])
+        first_row.push_back(r);
+    first_row.push_back(rows);
+    std::size_t longest = 0;
+    for(std::size_t s = 1; s < runs; ++s)
+      if(first_row[s + 1] - first_row[s] > first_row[longest + 1] - first_row[longest])
+        longest = s;
+    const std::size_t length = first_row[longest + 1] - first_row[longest];
+    if(left > 0 && length < 2)
+      continue;
+    // The leftover molds: columns spread evenly over the row.
+    for(std::size_t t = 0; t < left; ++t)
+    {
+      const std::size_t c = t * columns / left;
+      for(std::size_t r = first_row[longest] + length / 2; r < first_row[longest + 1]; ++r)
+        label[grid.face_at[r * columns + c]] = runs * columns + t;
+    }
+    relabel_by_first_face(label);
+    result.push_back(label);
+  }
+  return result;
+}
+
+} // namespace internal
+} // namespace Tilable_surfaces
+} // namespace CGAL
+
+#endif // CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_SWEEP_CANDIDATES_H

@@ -189,6 +189,7 @@ py::dict result_dict(const Mesh& mesh, const TS::K_set_tilable_result& r)
   d["mean_coverage_error"] = m.mean_coverage_error;
   d["hausdorff_distance"] = m.hausdorff_distance;
   d["mean_symmetric_distance"] = m.mean_symmetric_distance;
+  d["self_intersecting_face_pairs"] = m.self_intersecting_face_pairs;
   d["max_displacement"] = m.max_displacement;
   d["mean_displacement"] = m.mean_displacement;
   const TS::Energy_terms& e = m.normalized_terms;
@@ -311,7 +312,8 @@ an S-triangle's fourth corner is NaN), 'tile_corners' (K,) 4 or 3, 'is_tilable',
 diagonals of a face over the mean edge length), 'input_bbox_diagonal', 'hausdorff_distance' and
 'mean_symmetric_distance' (the distance between result and input both ways),
 'max_approximation_error', 'mean_approximation_error' (result to input), 'max_coverage_error',
-'mean_coverage_error' (input to result), all over the input's bounding-box diagonal, 'max_displacement',
+'mean_coverage_error' (input to result), all over the input's bounding-box diagonal,
+'self_intersecting_face_pairs' (pairs of faces of the result that cross), 'max_displacement',
 'mean_displacement', 'normalized_terms', 'iterations', 'total_time'.
 
 Raises ValueError, with the package's message, for input that cannot be processed.

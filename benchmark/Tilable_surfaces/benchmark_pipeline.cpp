@@ -1,13 +1,16 @@
-// The whole pipeline of make_k_set_tilable() at ~1k, ~10k and ~100k quads.
+// The whole pipeline of make_k_set_tilable() from ~1k to ~100k quads.
 //
 // On the seashell parametrization (benchmark_surfaces.h) at K = 100 it prints
 // a markdown table: the time of each phase (validation, clustering, the
 // displacement prediction that ranks the candidate clusterings, their
 // optimization, the improvement rounds, with the sweep clusterings solved
 // first from their exact start), the total, the peak memory, the
-// congruence error, the number of distinct S-quads and the symmetric
-// Hausdorff distance to the input; then the exponent a of a least-squares fit
-// time ~ quads^a over the sizes that finished. The peak memory is the
+// congruence error, the number of distinct S-quads, the symmetric
+// Hausdorff distance to the input and the pairs of faces of the result that
+// cross each other; then the exponent a of a least-squares fit
+// time ~ quads^a over the sizes that finished, and again over those above
+// `large_mesh_faces`, which take another path (the search ends at an exact
+// sweep, no candidate is solved from the input). The peak memory is the
 // process's high-water mark so far, so it is exact for the largest run only.
 //
 // The optimization is stopped through the visitor once a run has lasted
@@ -21,6 +24,7 @@
 #include "benchmark_surfaces.h"
 
 #include <CGAL/Tilable_surfaces/IO/read_polygon_mesh.h>
+#include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/make_k_set_tilable.h>
 
 #include <CGAL/Real_timer.h>
@@ -92,6 +96,15 @@ double growth_exponent(const std::vector<double>& x, const std::vector<double>& 
   return sxy / sxx;
 }
 
+void print_growth(const std::vector<double>& sizes, const std::vector<double>& times, const char* which)
+{
+  if(sizes.size() >= 2)
+    std::cout << "time ~ quads^" << growth_exponent(sizes, times) << " over " << which << " ("
+              << sizes.size() << ")\n";
+  else
+    std::cout << "fewer than two of " << which << ": no growth exponent\n";
+}
+
 // One run of the pipeline on `mesh`, as a table row; false if it was stopped.
 bool run(const std::string& name, Mesh& mesh, std::size_t k, double budget, double& total_time)
 {
@@ -103,9 +116,10 @@ bool run(const std::string& name, Mesh& mesh, std::size_t k, double budget, doub
       mesh, TS::parameters::number_of_tiles(k).visitor(Budget_visitor{{}, &record}));
   const TS::Tilability_measure& m = r.optimization.measure;
   char cells[160];
-  std::snprintf(cells, sizeof cells, "%.1f%s | %.0f | %.1e | %zu | %.2f", r.total_time,
+  std::snprintf(cells, sizeof cells, "%.1f%s | %.0f | %.1e | %zu | %.2f | %zu", r.total_time,
                 record.stopped ? " (stopped)" : "", benchmark_surfaces::peak_memory_mb(),
-                m.congruence_error, m.number_of_clusters, 100 * m.hausdorff_distance);
+                m.congruence_error, m.number_of_clusters, 100 * m.hausdorff_distance,
+                m.self_intersecting_face_pairs);
   std::cout << "| " << name << " | " << mesh.number_of_faces() << " | " << k << " | "
             << seconds(record, "validation") << " | " << seconds(record, "clustering") << " | "
             << seconds(record, "sweep candidate") << " | " << seconds(record, "displacement prediction") << " | "
@@ -144,8 +158,8 @@ int main(int argc, char** argv)
   }
   std::cout << "| surface | quads | K | validation (s) | clustering (s) | sweeps (s) | prediction (s)"
                " | candidate optimization (s) | improvement (s) | total (s) | peak memory (MB)"
-               " | congruence | distinct S-quads | Hausdorff (% diag) | chosen |\n"
-            << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
+               " | congruence | distinct S-quads | Hausdorff (% diag) | crossing face pairs | chosen |\n"
+            << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
   for(const std::string& file : files)
   {
     const std::string name = file.substr(file.find_last_of('/') + 1);
@@ -166,8 +180,8 @@ int main(int argc, char** argv)
   if(!files.empty())
     return EXIT_SUCCESS;
 
-  std::vector<double> sizes, times;
-  for(int n : {32, 100, 316})
+  std::vector<double> sizes, times, large_sizes, large_times;
+  for(int n : {32, 100, 141, 224, 316})
   {
     if(std::size_t(n) * n > max_quads)
       break;
@@ -177,12 +191,15 @@ int main(int argc, char** argv)
     {
       sizes.push_back(double(mesh.number_of_faces()));
       times.push_back(seconds_taken);
+      if(mesh.number_of_faces() > TS::large_mesh_faces)
+      {
+        large_sizes.push_back(sizes.back());
+        large_times.push_back(seconds_taken);
+      }
     }
   }
-  if(sizes.size() >= 2)
-    std::cout << "\ntime ~ quads^" << growth_exponent(sizes, times) << " over the " << sizes.size()
-              << " sizes that finished\n";
-  else
-    std::cout << "\nfewer than two sizes finished within the budget: no growth exponent\n";
+  std::cout << '\n';
+  print_growth(sizes, times, "the sizes that finished");
+  print_growth(large_sizes, large_times, "the sizes above large_mesh_faces that finished");
   return EXIT_SUCCESS;
 }

@@ -133,13 +133,14 @@ Options parse(int argc, char** argv, bool& help)
     ("k,k", po::value<int>(&o.k), "number K of distinct tiles (S-quads); with --max-deviation, "
      "the largest K tried")
     ("max-deviation", po::value<double>(&o.max_deviation),
-     "instead of K: the smallest K whose result is tilable within this symmetric Hausdorff "
-     "distance of the input, as a fraction of its bounding-box diagonal (0.01 = 1%)")
+     "instead of K: the smallest K whose result is tilable, does not cross itself and is within "
+     "this symmetric Hausdorff distance of the input, as a fraction of its bounding-box diagonal "
+     "(0.01 = 1%)")
     ("sweep", po::value<std::string>(&o.sweep),
      "KMIN:KMAX[:STEP]: run every K of the range and write the curve (--curve), no mesh")
     ("curve", po::value<std::string>(&o.curve),
      "CSV of the K tried (--sweep or --max-deviation): K, DOF, congruence, Hausdorff distance, "
-     "displacement, time; scripts/plot_curve.sh draws it")
+     "displacement, time, tilable, pairs of panels that cross; scripts/plot_curve.sh draws it")
     ("output,o", po::value<std::string>(&o.output),
      "moved mesh: .ply (with face properties cluster, orientation, red/green/blue), "
      ".obj (a group and a material per tile, OUTPUT.mtl beside it) or .off (geometry only)")
@@ -535,6 +536,9 @@ int run(const Options& o)
     std::cerr << "[k_set_tilable] WARNING: not every panel fits its mold "
               << (m.requires_planar_tiles ? "and is planar " : "")
               << "within 1e-6 of the mean edge length; see the report's per-cluster congruence errors\n";
+  if(m.self_intersecting_face_pairs > 0)
+    std::cerr << "[k_set_tilable] WARNING: the result crosses itself (" << m.self_intersecting_face_pairs
+              << " pairs of panels intersect); it cannot be built as it is: try a larger K\n";
   return 0;
 }
 

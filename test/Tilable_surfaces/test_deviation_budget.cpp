@@ -160,7 +160,7 @@ TEST(TileCountCurve, TheCsvHasOneRowPerKWithItsValues)
   std::string line;
   std::getline(out, line);
   const std::vector<std::string> header = csv_cells(line);
-  ASSERT_EQ(header.size(), 7u);
+  ASSERT_EQ(header.size(), 8u);
   EXPECT_EQ(header[0], "K");
   EXPECT_EQ(header[3], "hausdorff_distance");
   std::size_t row = 0;
@@ -172,6 +172,7 @@ TEST(TileCountCurve, TheCsvHasOneRowPerKWithItsValues)
     EXPECT_EQ(std::stoul(cells[0]), ks[row]);
     EXPECT_EQ(std::stod(cells[3]), curve[row].hausdorff_distance) << "full precision";
     EXPECT_EQ(cells[6], curve[row].is_tilable ? "1" : "0");
+    EXPECT_EQ(std::stoul(cells[7]), curve[row].self_intersecting_face_pairs);
     ++row;
   }
   EXPECT_EQ(row, ks.size());

@@ -128,6 +128,37 @@ TEST(Measure, OptimizedSurfaceMeasuredTwiceAgrees)
   EXPECT_EQ(m.degree_of_flexibility, 1u);
 }
 
+// A strip of three unit squares along x; the result stands the middle one up
+// (x = 2 lifted to (1, y, 1)) and swings the last one back to x = 0.5, at
+// height `end_height`. At -1 the last square crosses the plane z = 0 at
+// x = 0.75, inside the first square: exactly one pair of panels crosses. At
+// 0.5 it stays above that plane: none, although it folds back as far.
+std::size_t crossing_pairs_of_folded_strip(double end_height)
+{
+  Mesh input;
+  std::vector<Vertex> v;
+  for(int x = 0; x <= 3; ++x)
+    for(int y = 0; y <= 1; ++y)
+      v.push_back(input.add_vertex(Point(x, y, 0)));
+  for(int x = 0; x < 3; ++x)
+    input.add_face(v[2 * x], v[2 * x + 2], v[2 * x + 3], v[2 * x + 1]);
+  Mesh result = input;
+  for(int y = 0; y <= 1; ++y)
+  {
+    result.point(v[4 + y]) = Point(1, y, 1);
+    result.point(v[6 + y]) = Point(0.5, y, end_height);
+  }
+  const Clustering c = every_face_alone(result);
+  EXPECT_EQ(TS::measure_tilability(input, input, clustering_parameters(c)).self_intersecting_face_pairs, 0u);
+  return TS::measure_tilability(result, input, clustering_parameters(c)).self_intersecting_face_pairs;
+}
+
+TEST(Measure, PanelsCrossingEachOtherAreCounted)
+{
+  EXPECT_EQ(crossing_pairs_of_folded_strip(-1.0), 1u);
+  EXPECT_EQ(crossing_pairs_of_folded_strip(0.5), 0u);
+}
+
 TEST(Measure, MismatchedMeshesThrow)
 {
   Mesh a = two_squares();

@@ -3,22 +3,25 @@
 #ifndef TILABLE_SURFACES_TEST_TUBE_MESH_H
 #define TILABLE_SURFACES_TEST_TUBE_MESH_H
 
+#include <array>
 #include <cmath>
 #include <vector>
 
 // `rings` rings of `around` quads between rings + 1 closed vertex loops;
 // vertex j of loop i is at loop_point(i, j). Face (i, j) has vertices
 // (i, j), (i, j + 1), (i + 1, j + 1), (i + 1, j) and index i * around + j;
-// vertex (i, j) has index i * around + j.
+// vertex (i, j) has index i * around + j. `welded`: a torus instead, of
+// `rings` loops, the last ring joining loop rings - 1 to loop 0.
 template <typename Mesh, typename LoopPoint>
-Mesh swept_tube(int rings, int around, LoopPoint loop_point)
+Mesh swept_tube(int rings, int around, LoopPoint loop_point, bool welded = false)
 {
   Mesh m;
   std::vector<typename Mesh::Vertex_index> v;
-  for(int i = 0; i <= rings; ++i)
+  const int loops = welded ? rings : rings + 1;
+  for(int i = 0; i < loops; ++i)
     for(int j = 0; j < around; ++j)
       v.push_back(m.add_vertex(loop_point(i, j)));
-  auto id = [&](int i, int j) { return v[i * around + (j % around)]; };
+  auto id = [&](int i, int j) { return v[(i % loops) * around + (j % around)]; };
   for(int i = 0; i < rings; ++i)
     for(int j = 0; j < around; ++j)
       m.add_face(id(i, j), id(i, j + 1), id(i + 1, j + 1), id(i + 1, j));
@@ -50,6 +53,35 @@ Mesh horn(int rings, int around, double bend, double turn, Radius radius)
     const double out = bend + radius(i) * std::cos(a);
     return Point(out * std::cos(t), out * std::sin(t), radius(i) * std::sin(a));
   });
+}
+
+// A welded tube of radius `radius` about the trefoil knot
+// (sin t + 2 sin 2t, cos t - 2 cos 2t, -sin 3t): `rings` rings of `around`
+// quads, each loop a circle in the plane normal to the knot, started on the
+// Frenet normal (the knot's curvature never vanishes, and the frame closes).
+template <typename Mesh>
+Mesh trefoil_tube(int rings, int around, double radius)
+{
+  typedef typename Mesh::Point Point;
+  typedef std::array<double, 3> V;
+  auto cross = [](const V& a, const V& b) {
+    return V{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+  };
+  auto unit = [](const V& a) {
+    const double n = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    return V{a[0] / n, a[1] / n, a[2] / n};
+  };
+  return swept_tube<Mesh>(rings, around, [&](int i, int j) {
+    const double t = 2 * CGAL_PI * i / rings, a = 2 * CGAL_PI * j / around;
+    const V c{std::sin(t) + 2 * std::sin(2 * t), std::cos(t) - 2 * std::cos(2 * t), -std::sin(3 * t)};
+    const V d1{std::cos(t) + 4 * std::cos(2 * t), -std::sin(t) + 4 * std::sin(2 * t), -3 * std::cos(3 * t)};
+    const V d2{-std::sin(t) - 8 * std::sin(2 * t), -std::cos(t) + 8 * std::cos(2 * t), 9 * std::sin(3 * t)};
+    const V b = unit(cross(d1, d2)), n = unit(cross(b, d1));
+    V p;
+    for(int k = 0; k < 3; ++k)
+      p[k] = c[k] + radius * (std::cos(a) * n[k] + std::sin(a) * b[k]);
+    return Point(p[0], p[1], p[2]);
+  }, true);
 }
 
 #endif

@@ -32,8 +32,15 @@ struct Tile_count_trial
   double max_displacement = 0;            ///< largest vertex displacement, mesh units
   double seconds = 0;                     ///< time of this K's clustering and optimization
   bool is_tilable = false;                ///< congruence within `congruence_tolerance`
-  /// Whether this K is tilable within the deviation budget `max_deviation`.
-  bool meets(double max_deviation) const { return is_tilable && hausdorff_distance <= max_deviation; }
+  /// Pairs of panels of the result that cross each other
+  /// (`Tilability_measure::self_intersecting_face_pairs`).
+  std::size_t self_intersecting_face_pairs = 0;
+  /// Whether this K is tilable within the deviation budget `max_deviation`,
+  /// by a result that does not cross itself (it could not be built).
+  bool meets(double max_deviation) const
+  {
+    return is_tilable && self_intersecting_face_pairs == 0 && hausdorff_distance <= max_deviation;
+  }
 };
 
 /// \ingroup PkgTilableSurfacesRef

@@ -71,6 +71,7 @@ inline Tile_count_trial tile_count_trial(const K_set_tilable_result& r, double s
   t.max_displacement = m.max_displacement;
   t.seconds = seconds;
   t.is_tilable = r.is_tilable();
+  t.self_intersecting_face_pairs = m.self_intersecting_face_pairs;
   return t;
 }
 
@@ -162,7 +163,8 @@ K_set_tilable_result search_tile_count(PolygonMesh& pm, Surface& surface, Vertex
 ///   \cgalParamNBegin{max_deviation} a deviation budget instead of K: the
 ///     largest symmetric Hausdorff distance to the input allowed, as a
 ///     fraction of its bounding-box diagonal (`Tilability_measure::hausdorff_distance`).
-///     K is then the smallest whose result is tilable within it: galloped
+///     K is then the smallest whose result is tilable within it and does not
+///     cross itself (`Tilability_measure::self_intersecting_face_pairs`): galloped
 ///     from max(2, faces / 25) by halving or doubling, then bisected, each
 ///     K run once through the whole pipeline on the object validated once
 ///     (`K_set_tilable_result::trials`). The K returned met the budget and

@@ -12,6 +12,7 @@
 
 #include <CGAL/Tilable_surfaces/internal/Measure/approximation.h>
 #include <CGAL/Tilable_surfaces/internal/Measure/congruence.h>
+#include <CGAL/Tilable_surfaces/internal/Measure/self_intersections.h>
 #include <CGAL/Tilable_surfaces/internal/Tilable_problem.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/energy_terms.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/fairness_operator.h>
@@ -93,6 +94,13 @@ struct Tilability_measure
   double hausdorff_distance = 0;
   /// The mean of the two directions' mean distances, divided likewise.
   double mean_symmetric_distance = 0;
+  /// The number of pairs of faces of the result that cross each other (other
+  /// than along the vertices and edges they share), each face taken as the
+  /// fan of triangles around its vertex centroid, decided with exact
+  /// predicates. A surface that crosses itself cannot be built, however small
+  /// its congruence error and its distance to the input: a tube folded flat
+  /// stays within two radii of its input.
+  std::size_t self_intersecting_face_pairs = 0;
   /// `fraction` (of the bounding-box diagonal, as the distances above) in
   /// mean edge lengths of the input.
   double in_input_edge_lengths(double fraction) const
@@ -190,6 +198,7 @@ inline Tilability_measure measure_tilability(const Tilable_problem& problem,
   m.mean_coverage_error = from_input.mean / diagonal;
   m.hausdorff_distance = (std::max)(m.max_approximation_error, m.max_coverage_error);
   m.mean_symmetric_distance = 0.5 * (m.mean_approximation_error + m.mean_coverage_error);
+  m.self_intersecting_face_pairs = self_intersecting_face_pairs(problem, result);
 
   const Eigen::VectorXd displacement = (result - input).rowwise().norm();
   m.max_displacement = displacement.maxCoeff();

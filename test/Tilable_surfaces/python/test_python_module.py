@@ -80,6 +80,7 @@ class MakeKSetTilable(unittest.TestCase):
         self.assertTrue(np.all((r["orientation"] >= 0) & (r["orientation"] < 8)))
         self.assertEqual(np.bincount(r["cluster"], minlength=K).tolist(), r["cluster_sizes"].tolist())
         self.assertGreater(r["degree_of_flexibility"], 0)
+        self.assertIsInstance(r["self_intersecting_face_pairs"], int)
 
     def test_congruence_by_our_own_rigid_fits(self):
         r = self.result

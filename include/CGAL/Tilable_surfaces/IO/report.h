@@ -40,7 +40,8 @@ inline nlohmann::json tile_count_trials_json(const std::vector<Tile_count_trial>
                     {"hausdorff_distance", t.hausdorff_distance},
                     {"max_displacement", t.max_displacement},
                     {"seconds", t.seconds},
-                    {"tilable", t.is_tilable}});
+                    {"tilable", t.is_tilable},
+                    {"self_intersecting_face_pairs", t.self_intersecting_face_pairs}});
   return rows;
 }
 
@@ -97,7 +98,8 @@ inline nlohmann::json tilability_report_json(const K_set_tilable_result& r,
         {"mean", m.in_input_edge_lengths(m.mean_symmetric_distance)}}},
       {"length_scale", "input bounding-box diagonal"},
       {"input_bbox_diagonal", m.input_bbox_diagonal},
-      {"input_mean_edge_length", m.input_mean_edge_length}}},
+      {"input_mean_edge_length", m.input_mean_edge_length},
+      {"self_intersecting_face_pairs", m.self_intersecting_face_pairs}}},
     {"displacement", {{"max", m.max_displacement}, {"mean", m.mean_displacement}}},
     {"normalized_terms", energy_terms_json(m.normalized_terms)},
     {"tilable", r.is_tilable()},

@@ -21,18 +21,19 @@ namespace IO {
 
 /// \ingroup PkgTilableSurfacesRef
 /// Writes one row per trial, in the given order, under the header line
-/// `K,DOF,congruence_error,hausdorff_distance,max_displacement,seconds,tilable`:
+/// `K,DOF,congruence_error,hausdorff_distance,max_displacement,seconds,tilable,crossing_face_pairs`:
 /// the congruence error relative to the result's mean edge length, the
 /// symmetric Hausdorff distance relative to the input's bounding-box
-/// diagonal, the displacement in mesh units, `tilable` 1 or 0.
+/// diagonal, the displacement in mesh units, `tilable` 1 or 0, and the pairs
+/// of panels of the result that cross each other.
 inline bool write_tile_count_curve_CSV(std::ostream& os, const std::vector<Tile_count_trial>& trials)
 {
-  os << "K,DOF,congruence_error,hausdorff_distance,max_displacement,seconds,tilable\n";
+  os << "K,DOF,congruence_error,hausdorff_distance,max_displacement,seconds,tilable,crossing_face_pairs\n";
   os << std::setprecision(std::numeric_limits<double>::max_digits10);
   for(const Tile_count_trial& t : trials)
     os << t.number_of_tiles << ',' << t.degree_of_flexibility << ',' << t.congruence_error << ','
        << t.hausdorff_distance << ',' << t.max_displacement << ',' << t.seconds << ','
-       << (t.is_tilable ? 1 : 0) << '\n';
+       << (t.is_tilable ? 1 : 0) << ',' << t.self_intersecting_face_pairs << '\n';
   return bool(os);
 }
 

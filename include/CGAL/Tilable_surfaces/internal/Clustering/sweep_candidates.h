@@ -106,7 +106,6 @@ inline Eigen::Matrix3Xd apply_motion(const Eigen::Matrix4d& m, const Eigen::Matr
 // and the section, the mean of the rings pulled back to the middle ring.
 struct Swept_section
 {
-  std::vector<std::size_t> run_of;      // per row
   std::vector<Eigen::Matrix4d> motion;  // per run
   std::vector<Eigen::Matrix4d> frame;   // per ring: the middle ring's to its own
   Eigen::Matrix3Xd section;             // in the middle ring's frame
@@ -134,7 +133,6 @@ inline Swept_section swept_section(const std::vector<Eigen::Matrix3Xd>& ring, co
                                    bool column_runs)
 {
   Swept_section s;
-  s.run_of = run_of;
   const std::size_t rows = run_of.size(), runs = run_of.back() + 1;
   const Eigen::Index width = ring[0].cols();
   s.motion.resize(runs);

@@ -211,10 +211,10 @@ bool crosses_itself(const Mesh& m)
   return CGAL::Polygon_mesh_processing::does_self_intersect(t);
 }
 
-// A welded trefoil tube, 40 rings of 8 quads. At 12 to 24 molds its exact
-// results fold the tube flat, its strands crossing each other, yet within
-// 10% of the diagonal (a flat tube stays within two radii of the round one).
-// A budget of 10% must pass over them, to a larger K that does not cross.
+// A welded trefoil tube, 40 rings of 8 quads. At 4 to 10 molds its exact
+// results fold the tube, its strands crossing each other; at 10 within 10%
+// of the diagonal (a flat tube stays within two radii of the round one).
+// A budget of 10% must pass over such a K, to a larger one that does not cross.
 TEST(Fidelity, ADeviationBudgetPassesOverResultsThatCrossThemselves)
 {
   Mesh mesh = trefoil_tube<Mesh>(40, 8, 0.4);

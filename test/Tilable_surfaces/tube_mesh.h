@@ -3,7 +3,9 @@
 #ifndef TILABLE_SURFACES_TEST_TUBE_MESH_H
 #define TILABLE_SURFACES_TEST_TUBE_MESH_H
 
-#include <array>
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+
 #include <cmath>
 #include <vector>
 
@@ -63,24 +65,14 @@ template <typename Mesh>
 Mesh trefoil_tube(int rings, int around, double radius)
 {
   typedef typename Mesh::Point Point;
-  typedef std::array<double, 3> V;
-  auto cross = [](const V& a, const V& b) {
-    return V{a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
-  };
-  auto unit = [](const V& a) {
-    const double n = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
-    return V{a[0] / n, a[1] / n, a[2] / n};
-  };
   return swept_tube<Mesh>(rings, around, [&](int i, int j) {
     const double t = 2 * CGAL_PI * i / rings, a = 2 * CGAL_PI * j / around;
-    const V c{std::sin(t) + 2 * std::sin(2 * t), std::cos(t) - 2 * std::cos(2 * t), -std::sin(3 * t)};
-    const V d1{std::cos(t) + 4 * std::cos(2 * t), -std::sin(t) + 4 * std::sin(2 * t), -3 * std::cos(3 * t)};
-    const V d2{-std::sin(t) - 8 * std::sin(2 * t), -std::cos(t) + 8 * std::cos(2 * t), 9 * std::sin(3 * t)};
-    const V b = unit(cross(d1, d2)), n = unit(cross(b, d1));
-    V p;
-    for(int k = 0; k < 3; ++k)
-      p[k] = c[k] + radius * (std::cos(a) * n[k] + std::sin(a) * b[k]);
-    return Point(p[0], p[1], p[2]);
+    const Eigen::Vector3d c(std::sin(t) + 2 * std::sin(2 * t), std::cos(t) - 2 * std::cos(2 * t), -std::sin(3 * t));
+    const Eigen::Vector3d d1(std::cos(t) + 4 * std::cos(2 * t), -std::sin(t) + 4 * std::sin(2 * t), -3 * std::cos(3 * t));
+    const Eigen::Vector3d d2(-std::sin(t) - 8 * std::sin(2 * t), -std::cos(t) + 8 * std::cos(2 * t), 9 * std::sin(3 * t));
+    const Eigen::Vector3d b = d1.cross(d2).normalized(), n = b.cross(d1).normalized();
+    const Eigen::Vector3d p = c + radius * (std::cos(a) * n + std::sin(a) * b);
+    return Point(p.x(), p.y(), p.z());
   }, true);
 }
 

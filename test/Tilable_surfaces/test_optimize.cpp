@@ -66,6 +66,36 @@ struct Counting_visitor : TS::Default_visitor
 
 } // namespace
 
+// The one order every choice between results uses (candidates, rounds, a
+// sweep's exact start against its polish): tilable first, then one that
+// does not cross itself, then the closer to the input; among results that
+// are not tilable, the smaller congruence error. Strict: a tie keeps the
+// incumbent.
+TEST(Optimize, ResultsAreRankedTilableThenUncrossedThenClosest)
+{
+  auto result = [](bool tilable, std::size_t crossing_pairs, double hausdorff, double error) {
+    TS::Optimization_result r;
+    r.converged = tilable;
+    r.measure.self_intersecting_face_pairs = crossing_pairs;
+    r.measure.hausdorff_distance = hausdorff;
+    r.measure.congruence_error = error;
+    return r;
+  };
+  const TS::Optimization_result far = result(true, 0, 0.20, 1e-9), near = result(true, 0, 0.05, 1e-9),
+                                crossing = result(true, 3, 0.01, 1e-12), rough = result(false, 0, 0.0, 1e-3),
+                                rougher = result(false, 0, 0.0, 1e-2);
+  using CGAL::Tilable_surfaces::internal::is_better;
+  EXPECT_TRUE(is_better(near, far));
+  EXPECT_FALSE(is_better(far, near));
+  EXPECT_TRUE(is_better(far, crossing)); // farther, but it can be built
+  EXPECT_FALSE(is_better(crossing, far));
+  EXPECT_TRUE(is_better(crossing, rough));
+  EXPECT_FALSE(is_better(rough, crossing));
+  EXPECT_TRUE(is_better(rough, rougher));
+  EXPECT_FALSE(is_better(rougher, rough));
+  EXPECT_FALSE(is_better(near, near));
+}
+
 TEST(Optimize, EveryFaceAloneDoesNotMove)
 {
   Mesh mesh = load("monkey_saddle.off");

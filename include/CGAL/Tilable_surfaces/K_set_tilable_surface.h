@@ -40,27 +40,6 @@
 namespace CGAL {
 namespace Tilable_surfaces {
 
-namespace internal {
-
-// Whether result `a` is better than `b`: tilable before not, then one that
-// does not cross itself (it could not be built otherwise), then closer to
-// the input (symmetric Hausdorff distance), or, neither being tilable, the
-// smaller congruence error.
-inline bool is_better(const Optimization_result& a, const Optimization_result& b)
-{
-  if(a.converged != b.converged)
-    return a.converged;
-  if(!a.converged)
-    return a.measure.congruence_error < b.measure.congruence_error;
-  const bool a_crosses = a.measure.self_intersecting_face_pairs > 0,
-             b_crosses = b.measure.self_intersecting_face_pairs > 0;
-  if(a_crosses != b_crosses)
-    return b_crosses;
-  return a.measure.hausdorff_distance < b.measure.hausdorff_distance;
-}
-
-} // namespace internal
-
 /// \ingroup PkgTilableSurfacesRef
 /// A quad mesh on its way to a K-set tilable surface, one step at a time, as
 /// `Variational_shape_approximation` does for VSA (user manual, section "Step

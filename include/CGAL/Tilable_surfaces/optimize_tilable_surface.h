@@ -63,9 +63,24 @@ struct Optimization_result
   Tilability_measure measure;
 };
 
-
 namespace internal {
 
+// Whether result `a` is better than `b`: tilable before not, then one that
+// does not cross itself (it could not be built otherwise), then closer to
+// the input (symmetric Hausdorff distance), or, neither being tilable, the
+// smaller congruence error.
+inline bool is_better(const Optimization_result& a, const Optimization_result& b)
+{
+  if(a.converged != b.converged)
+    return a.converged;
+  if(!a.converged)
+    return a.measure.congruence_error < b.measure.congruence_error;
+  const bool a_crosses = a.measure.self_intersecting_face_pairs > 0,
+             b_crosses = b.measure.self_intersecting_face_pairs > 0;
+  if(a_crosses != b_crosses)
+    return b_crosses;
+  return a.measure.hausdorff_distance < b.measure.hausdorff_distance;
+}
 
 inline void check_parameter(bool ok, const std::string& what)
 {
@@ -156,8 +171,9 @@ struct Optimization_setup
 // optimize_tilable_surface() on a mesh validate_quad_mesh() accepted. With
 // `start` (positions by vertex index, in mesh units) at which the clustering
 // is exact, the default solver starts there instead of at the input, and the
-// start is the result unless the solve ends within the tolerance and closer
-// to the input (symmetric Hausdorff distance): the solve lowers its own
+// start is the result unless the solve's result is better by is_better():
+// tilable, not crossing itself where the start does, or else closer to the
+// input (symmetric Hausdorff distance): the solve lowers its own
 // closeness objective, which may move the surface away in the Hausdorff
 // sense (enneper2.obj, K = 36: 16.9% -> 17.8% after 40 iterations). A start
 // that is not exact is ignored.
@@ -229,11 +245,13 @@ Optimization_result optimize_tilable_surface(Validated_mesh, PolygonMesh& pm, co
   measured(X);
   if(compare_with_start)
   {
-    const Tilability_measure solved = result.measure;
-    const bool solved_is_exact = result.converged;
+    const Optimization_result solved = result;
     measured(S);
-    if(solved_is_exact && solved.hausdorff_distance < result.measure.hausdorff_distance)
-      result.measure = solved;
+    if(is_better(solved, result))
+    {
+      result.measure = solved.measure;
+      result.converged = solved.converged;
+    }
     else
     {
       X = S;

@@ -16,6 +16,7 @@
 #include <Eigen/Geometry>
 
 #include <limits>
+#include <map>
 #include <set>
 #include <vector>
 
@@ -309,4 +310,173 @@ TEST(SweepStart, SolveFromTheStartNeverEndsFarther)
         << "K = " << k << ", " << iterations << " iterations";
     }
   }
+}
+
+namespace {
+
+// A grid of quads trimmed by the ellipse inscribed in its rows x columns
+// box (a roof cut by its outline): vertex (i, j) at `point(i, j)`, face
+// (i, j) kept when its centre is inside. Only the vertices of kept faces are
+// added.
+template <typename PointAt>
+Mesh trimmed_grid(int rows, int columns, PointAt point)
+{
+  Mesh m;
+  std::map<std::pair<int, int>, Vertex> v;
+  auto vertex = [&](int i, int j) {
+    auto it = v.find({i, j});
+    if(it == v.end())
+      it = v.emplace(std::make_pair(i, j), m.add_vertex(point(i, j))).first;
+    return it->second;
+  };
+  for(int i = 0; i < rows; ++i)
+    for(int j = 0; j < columns; ++j)
+    {
+      const double x = (i + 0.5) / rows - 0.5, y = (j + 0.5) / columns - 0.5;
+      if(x * x + y * y <= 0.25)
+        m.add_face(vertex(i, j), vertex(i + 1, j), vertex(i + 1, j + 1), vertex(i, j + 1));
+    }
+  return m;
+}
+
+// A saddle roof whose quads all differ: no column clustering is exact at
+// the input.
+Mesh trimmed_roof()
+{
+  return trimmed_grid(16, 20, [](int i, int j) {
+    const double x = 0.1 * i, y = 0.1 * j;
+    return Point(x, y, 0.3 * (x - 0.8) * (x - 0.8) - 0.2 * (y - 1.0) * (y - 1.0) + 0.05 * std::sin(2 * x + y));
+  });
+}
+
+// Positions and orientations of the exact start of `label`.
+TSI::Point_matrix start_of(const Mesh& m, const std::vector<std::size_t>& label,
+                           std::vector<TS::Quad_orientation>& orientation)
+{
+  orientation.assign(num_faces(m), TS::Quad_orientation());
+  return TSI::sweep_start(m, get(CGAL::face_index, m), get(CGAL::vertex_index, m), get(CGAL::vertex_point, m),
+                          TSI::read_points(m, get(CGAL::vertex_point, m), get(CGAL::vertex_index, m)), label,
+                          &orientation);
+}
+
+Clustering clustered(Mesh& m, const std::vector<std::size_t>& label,
+                     const std::vector<TS::Quad_orientation>& orientation)
+{
+  Clustering c = clustered(m, label);
+  for(Face f : faces(m))
+    c.orientation[f] = orientation[std::size_t(f)].index();
+  return c;
+}
+
+} // namespace
+
+// A trimmed grid has rows of different lengths; with fewer molds than
+// columns each direction gives a sweep of K column runs. At the input no
+// such clustering is exact; at its start every one is, checked
+// independently, and every vertex is placed.
+TEST(SweepStart, TrimmedGridsAreSweptByColumnRuns)
+{
+  const Mesh m = trimmed_roof();
+  ASSERT_LT(num_faces(m), 16u * 20u);
+  const std::vector<std::vector<std::size_t> > labels = sweeps(m, 6);
+  ASSERT_EQ(labels.size(), 2u);
+  for(const std::vector<std::size_t>& label : labels)
+  {
+    EXPECT_EQ(std::set<std::size_t>(label.begin(), label.end()).size(), 6u);
+    std::vector<TS::Quad_orientation> orientation;
+    const TSI::Point_matrix start = start_of(m, label, orientation);
+    ASSERT_EQ(std::size_t(start.rows()), num_vertices(m));
+    Mesh input = m;
+    const Clustering at_input = clustered(input, label, orientation);
+    EXPECT_GT(congruence_by_umeyama(input, at_input.cluster, at_input.orientation), 1e-3);
+    Mesh moved = moved_to(m, start);
+    const Clustering c = clustered(moved, label, orientation);
+    EXPECT_LE(congruence_by_umeyama(moved, c.cluster, c.orientation), 1e-9);
+  }
+}
+
+// A trimmed piece of a cylinder, axis z, 0.1 radians per column: each
+// row's vertex line (constant angle) is the one before turned about the
+// axis, and a line along the axis at equal steps is a run of columns on a
+// helix of that turn. So the sweep whose rings are those lines starts at
+// the input itself.
+TEST(SweepStart, TrimmedCylinderIsItsOwnSweep)
+{
+  const Mesh m = trimmed_grid(14, 18, [](int i, int j) {
+    return Point(2 * std::cos(0.1 * i), 2 * std::sin(0.1 * i), 0.25 * j);
+  });
+  const TSI::Point_matrix input = TSI::read_points(m, get(CGAL::vertex_point, m), get(CGAL::vertex_index, m));
+  double closest = std::numeric_limits<double>::max();
+  for(const std::vector<std::size_t>& label : sweeps(m, 4))
+  {
+    std::vector<TS::Quad_orientation> orientation;
+    const TSI::Point_matrix start = start_of(m, label, orientation);
+    ASSERT_EQ(start.rows(), input.rows());
+    closest = (std::min)(closest, (start - input).rowwise().norm().maxCoeff());
+  }
+  EXPECT_LE(closest, 1e-9);
+}
+
+// Not a trimmed grid: a slit (the vertices along part of a grid line
+// doubled, so that the faces on its two sides do not meet there) would put
+// two vertices at one lattice point. Without the slit the roof has sweeps.
+TEST(SweepStart, NoSweepAcrossASlit)
+{
+  Mesh slit = trimmed_roof();
+  EXPECT_FALSE(sweeps(slit, 6).empty());
+  {
+    // The faces right of the line x = 0.8 get their own copies of its
+    // vertices below y = 0.95.
+    Mesh cut;
+    std::map<Vertex, Vertex> copy, doubled;
+    for(Vertex v : vertices(slit))
+      copy[v] = cut.add_vertex(slit.point(v));
+    for(Face f : faces(slit))
+    {
+      std::vector<Vertex> corners;
+      double lowest_x = std::numeric_limits<double>::max(), lowest_y = lowest_x;
+      for(Vertex v : vertices_around_face(halfedge(f, slit), slit))
+      {
+        lowest_x = (std::min)(lowest_x, slit.point(v).x());
+        lowest_y = (std::min)(lowest_y, slit.point(v).y());
+      }
+      const bool beyond = lowest_x > 0.75 && lowest_y < 0.95;
+      for(Vertex v : vertices_around_face(halfedge(f, slit), slit))
+      {
+        const bool on_line = std::abs(slit.point(v).x() - 0.8) < 1e-9 && slit.point(v).y() < 0.95;
+        if(beyond && on_line)
+        {
+          if(!doubled.count(v))
+            doubled[v] = cut.add_vertex(slit.point(v));
+          corners.push_back(doubled[v]);
+        }
+        else
+          corners.push_back(copy[v]);
+      }
+      ASSERT_NE(cut.add_face(corners), Mesh::null_face());
+    }
+    ASSERT_FALSE(doubled.empty());
+    slit = cut;
+  }
+  EXPECT_TRUE(sweeps(slit, 6).empty());
+}
+
+// make_k_set_tilable() on the trimmed roof at K = 6, with no solver
+// iteration: the sweep's start is the only exact result, so it is chosen
+// and the result is tilable, checked independently; without the sweeps
+// (segment candidates off) it is not.
+TEST(SweepStart, PipelineMakesATrimmedGridTilable)
+{
+  Mesh m = trimmed_roof();
+  Clustering c = add_clustering_maps(m);
+  const TS::K_set_tilable_result r = TS::make_k_set_tilable(
+    m, TS::parameters::number_of_tiles(6).number_of_iterations(0)
+         .face_cluster_map(c.cluster).face_orientation_map(c.orientation));
+  EXPECT_TRUE(r.is_tilable());
+  EXPECT_EQ(r.clustering.candidates[r.clustering.chosen_candidate].origin, TS::Clustering_candidate::GRID_SWEEPS);
+  EXPECT_LE(congruence_by_umeyama(m, c.cluster, c.orientation), 1e-6);
+
+  Mesh without = trimmed_roof();
+  EXPECT_FALSE(TS::make_k_set_tilable(without, TS::parameters::number_of_tiles(6).number_of_iterations(0)
+                                                 .use_segment_candidates(false)).is_tilable());
 }

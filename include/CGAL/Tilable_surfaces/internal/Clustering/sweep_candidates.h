@@ -21,8 +21,14 @@
 // A piece of the section keeps its place where it runs at a constant
 // distance from the axis; single columns take the rest. The runs are chosen
 // by dynamic programming with the least squared move of the section.
+//
+// A grid trimmed by its outline (trimmed_grid.h) has rings with points
+// missing: the motion is fitted on the pairs present, the section is the
+// mean of the points present; only its column runs apply, runs of rows
+// needing whole rows.
 
 #include <CGAL/Tilable_surfaces/internal/Clustering/segment_candidates.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/trimmed_grid.h>
 
 #include <Eigen/Geometry>
 
@@ -96,6 +102,43 @@ auto grid_rings(const Quad_grid& grid, Corner corner)
   return rings;
 }
 
+// The rings of a trimmed grid as grid_rings() gives them, rows + 1 of
+// columns + 1 lattice points, a default value where a point is missing;
+// `present` receives 1 or 0 per point.
+template <typename Corner>
+auto trimmed_grid_rings(const Quad_grid& grid, const Trimmed_grid_points& points, Corner corner,
+                        std::vector<Eigen::ArrayXd>& present)
+  -> std::vector<std::vector<decltype(corner(std::size_t(0), std::size_t(0), 0))> >
+{
+  typedef decltype(corner(std::size_t(0), std::size_t(0), 0)) Value;
+  const std::size_t width = grid.columns + 1;
+  std::vector<std::vector<Value> > rings(grid.rows + 1, std::vector<Value>(width, Value()));
+  present.assign(grid.rows + 1, Eigen::ArrayXd::Zero(Eigen::Index(width)));
+  for(std::size_t r = 0; r <= grid.rows; ++r)
+    for(std::size_t c = 0; c < width; ++c)
+    {
+      const std::size_t cell = points.cell[r * width + c];
+      if(cell == no_index())
+        continue;
+      rings[r][c] = corner(cell / grid.columns, cell % grid.columns, points.corner[r * width + c]);
+      present[r](Eigen::Index(c)) = 1;
+    }
+  return rings;
+}
+
+// The grid of `pm` whose rows are the strips of direction `row_direction`:
+// a full grid (quad_grid()), else a trimmed one (trimmed_quad_grid(), which
+// fills `points`; left empty for a full grid); rows == 0 when neither.
+template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
+Quad_grid full_or_trimmed_grid(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
+                               const std::array<std::vector<std::size_t>, 2>& strips, int row_direction,
+                               Trimmed_grid_points& points)
+{
+  points = Trimmed_grid_points();
+  Quad_grid grid = quad_grid(pm, fim, vpm, strips, row_direction);
+  return grid.rows > 0 ? grid : trimmed_quad_grid(pm, fim, vpm, row_direction, points);
+}
+
 inline Eigen::Matrix3Xd apply_motion(const Eigen::Matrix4d& m, const Eigen::Matrix3Xd& x)
 {
   return (m.topLeftCorner<3, 3>() * x).colwise() + m.topRightCorner<3, 1>();
@@ -104,8 +147,10 @@ inline Eigen::Matrix3Xd apply_motion(const Eigen::Matrix4d& m, const Eigen::Matr
 // A swept surface close to the rings of a grid: per run of rows the rigid
 // motion that best maps its rings onto the next ones (Umeyama, no scale),
 // and the section, the mean of the rings pulled back to the middle ring.
+// On a trimmed grid only the points present count, in both.
 struct Swept_section
 {
+  bool valid = true;  // false when a position of the section is on no ring, or a run has too few points
   std::vector<Eigen::Matrix4d> motion;  // per run
   std::vector<Eigen::Matrix4d> frame;   // per ring: the middle ring's to its own
   Eigen::Matrix3Xd section;             // in the middle ring's frame
@@ -126,15 +171,16 @@ struct Swept_section
 // ill-conditioned, and a translation commutes with the straight runs.
 constexpr double screw_angle_min = 1e-6;
 
-// `ring`: the input rings, `run_of`: the run of each row. With
-// `column_runs`, a single run whose motion hardly turns is made a translation
-// (screw_angle_min).
+// `ring`: the input rings, `run_of`: the run of each row, `present`: per
+// ring, 1 or 0 per point (null: all present). With `column_runs`, a single
+// run whose motion hardly turns is made a translation (screw_angle_min).
 inline Swept_section swept_section(const std::vector<Eigen::Matrix3Xd>& ring, const std::vector<std::size_t>& run_of,
-                                   bool column_runs)
+                                   bool column_runs, const std::vector<Eigen::ArrayXd>* present = nullptr)
 {
   Swept_section s;
   const std::size_t rows = run_of.size(), runs = run_of.back() + 1;
   const Eigen::Index width = ring[0].cols();
+  auto is_present = [&](std::size_t i, Eigen::Index j) { return present == nullptr || (*present)[i](j) > 0; };
   s.motion.resize(runs);
   for(std::size_t r = 0, a = 0; r < runs; ++r)
   {
@@ -142,12 +188,20 @@ inline Swept_section swept_section(const std::vector<Eigen::Matrix3Xd>& ring, co
     while(b < rows && run_of[b] == r)
       ++b;
     Eigen::Matrix3Xd from(3, width * Eigen::Index(b - a)), to(3, width * Eigen::Index(b - a));
+    Eigen::Index pairs = 0;
     for(std::size_t i = a; i < b; ++i)
+      for(Eigen::Index j = 0; j < width; ++j)
+        if(is_present(i, j) && is_present(i + 1, j))
+        {
+          from.col(pairs) = ring[i].col(j);
+          to.col(pairs++) = ring[i + 1].col(j);
+        }
+    if(pairs < 3)
     {
-      from.middleCols(width * Eigen::Index(i - a), width) = ring[i];
-      to.middleCols(width * Eigen::Index(i - a), width) = ring[i + 1];
+      s.valid = false;
+      return s;
     }
-    s.motion[r] = Eigen::umeyama(from, to, false);
+    s.motion[r] = Eigen::umeyama(from.leftCols(pairs), to.leftCols(pairs), false);
     a = b;
   }
   if(column_runs && Eigen::AngleAxisd(Eigen::Matrix3d(s.motion[0].topLeftCorner<3, 3>())).angle() < screw_angle_min)
@@ -159,9 +213,20 @@ inline Swept_section swept_section(const std::vector<Eigen::Matrix3Xd>& ring, co
   for(std::size_t i = middle; i > 0; --i)
     s.frame[i - 1] = s.motion[run_of[i - 1]].inverse() * s.frame[i];
   s.section = Eigen::Matrix3Xd::Zero(3, width);
+  Eigen::ArrayXd count = Eigen::ArrayXd::Zero(width);
   for(std::size_t i = 0; i <= rows; ++i)
-    s.section += apply_motion(s.frame[i].inverse(), ring[i]);
-  s.section /= double(rows + 1);
+  {
+    const Eigen::Matrix3Xd pulled = apply_motion(s.frame[i].inverse(), ring[i]);
+    for(Eigen::Index j = 0; j < width; ++j)
+      if(is_present(i, j))
+      {
+        s.section.col(j) += pulled.col(j);
+        count(j) += 1;
+      }
+  }
+  s.valid = (count > 0).all();
+  for(Eigen::Index j = 0; j < width && s.valid; ++j)
+    s.section.col(j) /= count(j);
   return s;
 }
 
@@ -403,27 +468,36 @@ inline bool fit_screw_column_runs(Eigen::Matrix3Xd& section, const Eigen::Matrix
 
 // The one-run sweep clustering of `grid` whose columns are cut into k screw
 // column runs; empty when there is none.
-inline std::vector<std::size_t> screw_column_sweep(const Quad_grid& grid, std::size_t k)
+// `points`: those of a trimmed grid, else empty.
+inline std::vector<std::size_t> screw_column_sweep(const Quad_grid& grid, const Trimmed_grid_points& points,
+                                                   std::size_t k)
 {
   const std::size_t rows = grid.rows, columns = grid.columns;
+  auto corner = [&](std::size_t r, std::size_t c, int i) {
+    return Eigen::Vector3d(grid.corners[grid.face_at[r * columns + c]][i]);
+  };
+  std::vector<Eigen::ArrayXd> present;
+  const bool trimmed = !points.cell.empty();
   const std::vector<std::vector<Eigen::Vector3d> > rings =
-    grid_rings(grid, [&](std::size_t r, std::size_t c, int i) {
-      return Eigen::Vector3d(grid.corners[grid.face_at[r * columns + c]][i]);
-    });
+    trimmed ? trimmed_grid_rings(grid, points, corner, present) : grid_rings(grid, corner);
   if(rings.empty())
     return {};
   std::vector<Eigen::Matrix3Xd> ring(rings.size(), Eigen::Matrix3Xd(3, Eigen::Index(rings[0].size())));
   for(std::size_t i = 0; i < rings.size(); ++i)
     for(std::size_t j = 0; j < rings[i].size(); ++j)
       ring[i].col(Eigen::Index(j)) = rings[i][j];
-  const Swept_section swept = swept_section(ring, std::vector<std::size_t>(rows, 0), true);
+  const Swept_section swept =
+    swept_section(ring, std::vector<std::size_t>(rows, 0), true, trimmed ? &present : nullptr);
+  if(!swept.valid)
+    return {};
   const std::vector<std::size_t> run_of_column = screw_column_runs(swept.section, swept.motion[0], columns, k);
   if(run_of_column.empty())
     return {};
-  std::vector<std::size_t> label(grid.face_at.size());
+  std::vector<std::size_t> label(grid.corners.size());
   for(std::size_t r = 0; r < rows; ++r)
     for(std::size_t c = 0; c < columns; ++c)
-      label[grid.face_at[r * columns + c]] = run_of_column[c];
+      if(grid.face_at[r * columns + c] != no_index())
+        label[grid.face_at[r * columns + c]] = run_of_column[c];
   relabel_by_first_face(label);
   return label;
 }
@@ -446,17 +520,22 @@ sweep_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, s
   const std::array<std::vector<std::size_t>, 2> strips = quad_strips(pm, fim);
   for(int row_direction = 0; row_direction < 2; ++row_direction)
   {
-    const Quad_grid grid = quad_grid(pm, fim, vpm, strips, row_direction);
+    Trimmed_grid_points points;
+    const Quad_grid grid = full_or_trimmed_grid(pm, fim, vpm, strips, row_direction, points);
     const std::size_t rows = grid.rows, columns = grid.columns;
-    if(rows == 0 || closed_across_rows(grid))
+    const bool trimmed = !points.cell.empty();
+    if(rows == 0 || (!trimmed && closed_across_rows(grid)))
       continue;
     if(columns > k)
     {
-      std::vector<std::size_t> label = screw_column_sweep(grid, k);
+      std::vector<std::size_t> label = screw_column_sweep(grid, points, k);
       if(!label.empty())
         result.push_back(label);
       continue;
     }
+    // Runs of rows need every row whole (run_option()).
+    if(trimmed)
+      continue;
     const std::size_t runs = (std::min)(rows, k / columns), left = k - runs * columns;
     if(double(rows) * double(rows) * double(runs) > 1e8)
       continue;

@@ -31,8 +31,9 @@ namespace internal {
 
 // Positions, by vertex index, at which the clustering `label` (by face
 // index) is exact, as described above; an empty matrix when the quads do
-// not form a grid whose every cluster lies in one column and one run of
-// rows, or in one run of columns of a single run of rows. `points` are the
+// not form a grid, full or trimmed (trimmed_grid.h: only the points
+// present are fitted and placed), whose every cluster lies in one column
+// and one run of rows, or in one run of columns of a single run of rows. `points` are the
 // input positions by vertex index. `orientation`, if given, receives the
 // orientation of every face (by face index) at which the clusters' quads
 // correspond corner by corner there, in grid order: exact, where a best
@@ -51,18 +52,24 @@ Point_matrix sweep_start(const PolygonMesh& pm, FaceIndexMap fim, VertexIndexMap
   const std::array<std::vector<std::size_t>, 2> strips = quad_strips(pm, fim);
   for(int row_direction = 0; row_direction < 2; ++row_direction)
   {
-    const Quad_grid grid = quad_grid(pm, fim, vpm, strips, row_direction);
+    Trimmed_grid_points points_of_grid;
+    const Quad_grid grid = full_or_trimmed_grid(pm, fim, vpm, strips, row_direction, points_of_grid);
     if(grid.rows == 0)
       continue;
+    const bool trimmed = !points_of_grid.cell.empty();
     const std::size_t rows = grid.rows, columns = grid.columns;
-    auto label_at = [&](std::size_t r, std::size_t c) { return label[grid.face_at[r * columns + c]]; };
+    // no_index() at a missing cell of a trimmed grid.
+    auto label_at = [&](std::size_t r, std::size_t c) {
+      const std::size_t f = grid.face_at[r * columns + c];
+      return f == no_index() ? no_index() : label[f];
+    };
     // Rows r and r + 1 share a motion when a cluster holds a quad of both.
     std::vector<std::size_t> run_of(rows, 0);
     for(std::size_t r = 1; r < rows; ++r)
     {
       bool tied = false;
       for(std::size_t c = 0; c < columns && !tied; ++c)
-        tied = label_at(r, c) == label_at(r - 1, c);
+        tied = label_at(r, c) != no_index() && label_at(r, c) == label_at(r - 1, c);
       run_of[r] = run_of[r - 1] + (tied ? 0 : 1);
     }
     // Every cluster in one column and one run, or one run of rows whose
@@ -74,6 +81,8 @@ Point_matrix sweep_start(const PolygonMesh& pm, FaceIndexMap fim, VertexIndexMap
       for(std::size_t c = 0; c < columns && fits; ++c)
       {
         const std::size_t l = label_at(r, c);
+        if(l == no_index())
+          continue;
         if(column_of[l] == no_index())
         {
           column_of[l] = c;
@@ -81,44 +90,62 @@ Point_matrix sweep_start(const PolygonMesh& pm, FaceIndexMap fim, VertexIndexMap
         }
         fits = column_of[l] == c && run_of_cluster[l] == run_of[r];
       }
-    std::vector<std::size_t> run_of_column(columns);
-    for(std::size_t c = 0; c < columns; ++c)
-      run_of_column[c] = label_at(0, c);
+    // The label of the first quad of every column.
+    std::vector<std::size_t> run_of_column(columns, no_index());
+    for(std::size_t r = 0; r < rows; ++r)
+      for(std::size_t c = 0; c < columns; ++c)
+        if(run_of_column[c] == no_index())
+          run_of_column[c] = label_at(r, c);
     if(!fits && run_of.back() == 0)
     {
       column_runs = true;
       for(std::size_t r = 1; r < rows && column_runs; ++r)
         for(std::size_t c = 0; c < columns && column_runs; ++c)
-          column_runs = label_at(r, c) == run_of_column[c];
+          column_runs = label_at(r, c) == no_index() || label_at(r, c) == run_of_column[c];
     }
     if(!fits && !column_runs)
       continue;
-    const std::vector<std::vector<std::size_t> > rings = grid_rings(grid, [&](std::size_t r, std::size_t c, int i) {
+    auto vertex = [&](std::size_t r, std::size_t c, int i) {
       const std::size_t f = grid.face_at[r * columns + c];
       halfedge_descriptor h = halfedge(face_of[f], pm);
       for(int j = 0; j < grid.corner_offset[f] + i; ++j)
         h = next(h, pm);
       return std::size_t(get(vim, target(h, pm)));
-    });
+    };
+    std::vector<Eigen::ArrayXd> present;
+    const std::vector<std::vector<std::size_t> > rings =
+      trimmed ? trimmed_grid_rings(grid, points_of_grid, vertex, present) : grid_rings(grid, vertex);
     if(rings.empty())
       continue;
     const Eigen::Index width = Eigen::Index(rings[0].size());
-    std::vector<Eigen::Matrix3Xd> ring(rows + 1, Eigen::Matrix3Xd(3, width));
+    if(!trimmed)
+      present.assign(rows + 1, Eigen::ArrayXd::Ones(width));
+    std::vector<Eigen::Matrix3Xd> ring(rows + 1, Eigen::Matrix3Xd::Zero(3, width));
     for(std::size_t i = 0; i <= rows; ++i)
       for(Eigen::Index j = 0; j < width; ++j)
-        ring[i].col(j) = points.row(Eigen::Index(rings[i][std::size_t(j)])).transpose();
-    Swept_section swept = swept_section(ring, run_of, column_runs);
-    if(column_runs && !fit_screw_column_runs(swept.section, swept.motion[0], run_of_column))
+        if(present[i](j) > 0)
+          ring[i].col(j) = points.row(Eigen::Index(rings[i][std::size_t(j)])).transpose();
+    Swept_section swept = swept_section(ring, run_of, column_runs, &present);
+    if(!swept.valid || (column_runs && !fit_screw_column_runs(swept.section, swept.motion[0], run_of_column)))
       continue;
     const Eigen::Matrix3Xd surface = swept.swept();
-    Eigen::Matrix3Xd input(3, width * Eigen::Index(rows + 1));
-    for(std::size_t i = 0; i <= rows; ++i)
-      input.middleCols(width * Eigen::Index(i), width) = ring[i];
-    const Eigen::Matrix3Xd aligned = apply_motion(Eigen::umeyama(surface, input, false), surface);
-    Point_matrix start = points;
+    // The swept points of the rings' points present, and the input's.
+    Eigen::Matrix3Xd input(3, width * Eigen::Index(rows + 1)), swept_points(3, input.cols());
+    std::vector<std::size_t> vertex_of;
     for(std::size_t i = 0; i <= rows; ++i)
       for(Eigen::Index j = 0; j < width; ++j)
-        start.row(Eigen::Index(rings[i][std::size_t(j)])) = aligned.col(width * Eigen::Index(i) + j).transpose();
+        if(present[i](j) > 0)
+        {
+          input.col(Eigen::Index(vertex_of.size())) = ring[i].col(j);
+          swept_points.col(Eigen::Index(vertex_of.size())) = surface.col(width * Eigen::Index(i) + j);
+          vertex_of.push_back(rings[i][std::size_t(j)]);
+        }
+    const Eigen::Index count = Eigen::Index(vertex_of.size());
+    const Eigen::Matrix3Xd aligned =
+      apply_motion(Eigen::umeyama(swept_points.leftCols(count), input.leftCols(count), false), swept_points.leftCols(count));
+    Point_matrix start = points;
+    for(Eigen::Index p = 0; p < count; ++p)
+      start.row(Eigen::Index(vertex_of[std::size_t(p)])) = aligned.col(p).transpose();
     // Corner i in grid order is the face's vertex corner_offset + i.
     if(orientation != nullptr)
       for(std::size_t f = 0; f < grid.corner_offset.size(); ++f)

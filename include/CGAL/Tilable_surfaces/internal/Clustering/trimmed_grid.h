@@ -36,9 +36,9 @@ struct Trimmed_grid_points
   std::vector<int> corner;
 };
 
-// Corner i of the cell of row r and column c lies at ring r + dr[i],
-// position c + dc[i] (Quad_grid: corners 0, 1 on the far ring, 3 and 0 on
-// the edge towards the next column).
+// Corner i of the cell of row r and column c lies at ring
+// r + grid_corner_ring[i], position c + grid_corner_position[i] (Quad_grid:
+// corners 0, 1 on the far ring, 3 and 0 on the edge towards the next column).
 constexpr int grid_corner_ring[4] = {1, 1, 0, 0};
 constexpr int grid_corner_position[4] = {1, 0, 0, 1};
 
@@ -151,11 +151,12 @@ Quad_grid trimmed_quad_grid(const PolygonMesh& pm, FaceIndexMap fim, VertexPoint
         lattice.corner[p] = i;
         vertex_at[p] = v;
       }
-      else if(vertex_at[p] != v)
+      else if(vertex_at[p] != v)  // a slit: two vertices at one lattice point
         return none;
     }
   }
-  // One lattice point per vertex: a slit would put one vertex at two.
+  // One lattice point per vertex: a surface that meets itself at a vertex
+  // would put that vertex at two.
   std::vector<vertex_descriptor> seen;
   seen.reserve(lattice.cell.size());
   for(std::size_t p = 0; p < lattice.cell.size(); ++p)

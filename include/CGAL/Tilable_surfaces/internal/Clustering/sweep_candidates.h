@@ -102,15 +102,22 @@ auto grid_rings(const Quad_grid& grid, Corner corner)
   return rings;
 }
 
-// The rings of a trimmed grid as grid_rings() gives them, rows + 1 of
-// columns + 1 lattice points, a default value where a point is missing;
-// `present` receives 1 or 0 per point.
+// The rings of `grid` as grid_rings() gives them, and `present`: per ring,
+// 1 or 0 per point. On a full grid (`points` empty) every point is present;
+// on a trimmed one there are rows + 1 rings of columns + 1 lattice points,
+// a default value where a point is missing.
 template <typename Corner>
-auto trimmed_grid_rings(const Quad_grid& grid, const Trimmed_grid_points& points, Corner corner,
+auto present_grid_rings(const Quad_grid& grid, const Trimmed_grid_points& points, Corner corner,
                         std::vector<Eigen::ArrayXd>& present)
   -> std::vector<std::vector<decltype(corner(std::size_t(0), std::size_t(0), 0))> >
 {
   typedef decltype(corner(std::size_t(0), std::size_t(0), 0)) Value;
+  if(points.cell.empty())
+  {
+    std::vector<std::vector<Value> > rings = grid_rings(grid, corner);
+    present.assign(rings.size(), Eigen::ArrayXd::Ones(rings.empty() ? 0 : Eigen::Index(rings[0].size())));
+    return rings;
+  }
   const std::size_t width = grid.columns + 1;
   std::vector<std::vector<Value> > rings(grid.rows + 1, std::vector<Value>(width, Value()));
   present.assign(grid.rows + 1, Eigen::ArrayXd::Zero(Eigen::Index(width)));
@@ -172,15 +179,15 @@ struct Swept_section
 constexpr double screw_angle_min = 1e-6;
 
 // `ring`: the input rings, `run_of`: the run of each row, `present`: per
-// ring, 1 or 0 per point (null: all present). With `column_runs`, a single
+// ring, 1 or 0 per point (present_grid_rings()). With `column_runs`, a single
 // run whose motion hardly turns is made a translation (screw_angle_min).
 inline Swept_section swept_section(const std::vector<Eigen::Matrix3Xd>& ring, const std::vector<std::size_t>& run_of,
-                                   bool column_runs, const std::vector<Eigen::ArrayXd>* present = nullptr)
+                                   bool column_runs, const std::vector<Eigen::ArrayXd>& present)
 {
   Swept_section s;
   const std::size_t rows = run_of.size(), runs = run_of.back() + 1;
   const Eigen::Index width = ring[0].cols();
-  auto is_present = [&](std::size_t i, Eigen::Index j) { return present == nullptr || (*present)[i](j) > 0; };
+  auto is_present = [&](std::size_t i, Eigen::Index j) { return present[i](j) > 0; };
   s.motion.resize(runs);
   for(std::size_t r = 0, a = 0; r < runs; ++r)
   {
@@ -477,17 +484,14 @@ inline std::vector<std::size_t> screw_column_sweep(const Quad_grid& grid, const 
     return Eigen::Vector3d(grid.corners[grid.face_at[r * columns + c]][i]);
   };
   std::vector<Eigen::ArrayXd> present;
-  const bool trimmed = !points.cell.empty();
-  const std::vector<std::vector<Eigen::Vector3d> > rings =
-    trimmed ? trimmed_grid_rings(grid, points, corner, present) : grid_rings(grid, corner);
+  const std::vector<std::vector<Eigen::Vector3d> > rings = present_grid_rings(grid, points, corner, present);
   if(rings.empty())
     return {};
   std::vector<Eigen::Matrix3Xd> ring(rings.size(), Eigen::Matrix3Xd(3, Eigen::Index(rings[0].size())));
   for(std::size_t i = 0; i < rings.size(); ++i)
     for(std::size_t j = 0; j < rings[i].size(); ++j)
       ring[i].col(Eigen::Index(j)) = rings[i][j];
-  const Swept_section swept =
-    swept_section(ring, std::vector<std::size_t>(rows, 0), true, trimmed ? &present : nullptr);
+  const Swept_section swept = swept_section(ring, std::vector<std::size_t>(rows, 0), true, present);
   if(!swept.valid)
     return {};
   const std::vector<std::size_t> run_of_column = screw_column_runs(swept.section, swept.motion[0], columns, k);

@@ -28,7 +28,7 @@ namespace CGAL {
 namespace Tilable_surfaces {
 namespace internal {
 
-// Per lattice point (ring r, position c: ring_point[r * (columns + 1) + c])
+// Per lattice point (ring r, position c: entry r * (columns + 1) + c)
 // of a trimmed grid, a cell that has it and its corner there, or no cell.
 struct Trimmed_grid_points
 {

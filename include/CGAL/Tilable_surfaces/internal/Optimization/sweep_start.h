@@ -56,7 +56,6 @@ Point_matrix sweep_start(const PolygonMesh& pm, FaceIndexMap fim, VertexIndexMap
     const Quad_grid grid = full_or_trimmed_grid(pm, fim, vpm, strips, row_direction, points_of_grid);
     if(grid.rows == 0)
       continue;
-    const bool trimmed = !points_of_grid.cell.empty();
     const std::size_t rows = grid.rows, columns = grid.columns;
     // no_index() at a missing cell of a trimmed grid.
     auto label_at = [&](std::size_t r, std::size_t c) {
@@ -113,19 +112,16 @@ Point_matrix sweep_start(const PolygonMesh& pm, FaceIndexMap fim, VertexIndexMap
       return std::size_t(get(vim, target(h, pm)));
     };
     std::vector<Eigen::ArrayXd> present;
-    const std::vector<std::vector<std::size_t> > rings =
-      trimmed ? trimmed_grid_rings(grid, points_of_grid, vertex, present) : grid_rings(grid, vertex);
+    const std::vector<std::vector<std::size_t> > rings = present_grid_rings(grid, points_of_grid, vertex, present);
     if(rings.empty())
       continue;
     const Eigen::Index width = Eigen::Index(rings[0].size());
-    if(!trimmed)
-      present.assign(rows + 1, Eigen::ArrayXd::Ones(width));
     std::vector<Eigen::Matrix3Xd> ring(rows + 1, Eigen::Matrix3Xd::Zero(3, width));
     for(std::size_t i = 0; i <= rows; ++i)
       for(Eigen::Index j = 0; j < width; ++j)
         if(present[i](j) > 0)
           ring[i].col(j) = points.row(Eigen::Index(rings[i][std::size_t(j)])).transpose();
-    Swept_section swept = swept_section(ring, run_of, column_runs, &present);
+    Swept_section swept = swept_section(ring, run_of, column_runs, present);
     if(!swept.valid || (column_runs && !fit_screw_column_runs(swept.section, swept.motion[0], run_of_column)))
       continue;
     const Eigen::Matrix3Xd surface = swept.swept();

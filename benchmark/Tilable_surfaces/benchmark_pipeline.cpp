@@ -1,17 +1,22 @@
 // The whole pipeline of make_k_set_tilable() from ~1k to ~100k quads.
 //
-// On the seashell parametrization (benchmark_surfaces.h) at K = 100 it prints
-// a markdown table: the time of each phase (validation, clustering, the
-// displacement prediction that ranks the candidate clusterings, their
-// optimization, the improvement rounds, with the sweep clusterings solved
-// first from their exact start), the total, the peak memory, the
+// On two generated surfaces (benchmark_surfaces.h) at K = 100, the seashell
+// parametrization (a full grid closed around its tube) and a saddle roof
+// trimmed by an elliptic outline (a grid whose rows have different lengths),
+// from about 1k to 100k quads, it prints a markdown table: the time of each
+// phase (validation, clustering, the displacement prediction that ranks the
+// candidate clusterings, their optimization, the improvement rounds, with
+// the sweep clusterings solved first from their exact start), the total,
+// the peak memory, the
 // congruence error, the number of distinct S-quads, the symmetric
 // Hausdorff distance to the input and the pairs of faces of the result that
 // cross each other; then the exponent a of a least-squares fit
 // time ~ quads^a over the sizes that finished, and again over those above
 // `large_mesh_faces`, which take another path (the search ends at an exact
-// sweep, no candidate is solved from the input). The peak memory is the
-// process's high-water mark so far, so it is exact for the largest run only.
+// sweep, no candidate is solved from the input), for each surface. The peak
+// memory is the process's high-water mark, reset before each run (where
+// Linux allows it; the header says when it cannot, and the mark then only
+// grows).
 //
 // The optimization is stopped through the visitor once a run has lasted
 // `budget` seconds (default 600); such a row is marked "stopped" and its
@@ -32,6 +37,7 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -39,6 +45,7 @@
 #include <iostream>
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace TS = CGAL::Tilable_surfaces;
@@ -110,6 +117,7 @@ bool run(const std::string& name, Mesh& mesh, std::size_t k, double budget, doub
 {
   Run_record record;
   record.budget = budget;
+  benchmark_surfaces::reset_peak_memory();
   record.clock.start();
   const TS::K_set_tilable_result r =
     TS::make_k_set_tilable<CGAL::Parallel_if_available_tag>(
@@ -156,6 +164,8 @@ int main(int argc, char** argv)
     else
       files.push_back(arg);
   }
+  if(!benchmark_surfaces::reset_peak_memory())
+    std::cout << "(the peak memory cannot be reset here: each row's is the largest so far)\n";
   std::cout << "| surface | quads | K | validation (s) | clustering (s) | sweeps (s) | prediction (s)"
                " | candidate optimization (s) | improvement (s) | total (s) | peak memory (MB)"
                " | congruence | distinct S-quads | Hausdorff (% diag) | crossing face pairs | chosen |\n"
@@ -180,26 +190,36 @@ int main(int argc, char** argv)
   if(!files.empty())
     return EXIT_SUCCESS;
 
-  std::vector<double> sizes, times, large_sizes, large_times;
-  for(int n : {32, 100, 141, 224, 316})
-  {
-    if(std::size_t(n) * n > max_quads)
-      break;
-    Mesh mesh = benchmark_surfaces::seashell<Mesh>(n);
-    double seconds_taken = 0;
-    if(run("seashell", mesh, k > 0 ? k : 100, budget, seconds_taken))
+  // One series of sizes of a generated surface, then its growth exponents.
+  auto series = [&](const char* name, auto generate, std::initializer_list<int> resolutions) {
+    std::vector<double> sizes, times, large_sizes, large_times;
+    for(int n : resolutions)
     {
-      sizes.push_back(double(mesh.number_of_faces()));
-      times.push_back(seconds_taken);
-      if(mesh.number_of_faces() > TS::large_mesh_faces)
+      Mesh mesh = generate(n);
+      if(mesh.number_of_faces() > max_quads)
+        break;
+      double seconds_taken = 0;
+      if(run(name, mesh, k > 0 ? k : 100, budget, seconds_taken))
       {
-        large_sizes.push_back(sizes.back());
-        large_times.push_back(seconds_taken);
+        sizes.push_back(double(mesh.number_of_faces()));
+        times.push_back(seconds_taken);
+        if(mesh.number_of_faces() > TS::large_mesh_faces)
+        {
+          large_sizes.push_back(sizes.back());
+          large_times.push_back(seconds_taken);
+        }
       }
     }
+    return std::array<std::vector<double>, 4>{sizes, times, large_sizes, large_times};
+  };
+  const auto shell = series("seashell", benchmark_surfaces::seashell<Mesh>, {32, 100, 141, 224, 316});
+  const auto roof = series("trimmed roof", benchmark_surfaces::trimmed_roof<Mesh>, {41, 130, 409});
+  for(const auto& [name, s] : {std::pair<const char*, decltype(shell)>{"seashell", shell}, {"trimmed roof", roof}})
+  {
+    std::cout << '\n' << name << ": ";
+    print_growth(s[0], s[1], "the sizes that finished");
+    std::cout << name << ": ";
+    print_growth(s[2], s[3], "the sizes above large_mesh_faces that finished");
   }
-  std::cout << '\n';
-  print_growth(sizes, times, "the sizes that finished");
-  print_growth(large_sizes, large_times, "the sizes above large_mesh_faces that finished");
   return EXIT_SUCCESS;
 }

@@ -1,4 +1,4 @@
-// The surface and the memory probe the benchmark programs share.
+// The surfaces and the memory probe the benchmark programs share.
 #ifndef CGAL_TILABLE_SURFACES_BENCHMARK_SURFACES_H
 #define CGAL_TILABLE_SURFACES_BENCHMARK_SURFACES_H
 
@@ -33,8 +33,39 @@ Mesh seashell(int n)
   return m;
 }
 
-// The process's high-water mark of resident memory (VmHWM) in MB, -1 where
-// /proc is not available. It only grows: measure sizes in increasing order.
+// A saddle roof z = 0.35 (x^2 - y^2) + 0.08 sin(2.5 x + 1.3 y) on an n x n grid
+// over [-1, 1]^2, trimmed by its outline: only the cells whose centre lies in
+// the ellipse x^2 + (y / 0.8)^2 <= 0.95 are kept (about 0.6 n^2 quads), so its
+// rows have different lengths, as a facade's or a roof's do.
+template <typename Mesh>
+Mesh trimmed_roof(int n)
+{
+  typedef typename Mesh::Point Point;
+  typedef typename Mesh::Vertex_index Vertex;
+  auto inside = [n](int i, int j) {
+    const double x = -1 + 2 * (i + 0.5) / n, y = -1 + 2 * (j + 0.5) / n;
+    return x * x + (y / 0.8) * (y / 0.8) <= 0.95;
+  };
+  Mesh m;
+  std::vector<Vertex> v(std::size_t(n + 1) * std::size_t(n + 1), Mesh::null_vertex());
+  auto id = [&](int i, int j) {
+    Vertex& w = v[std::size_t(j) * std::size_t(n + 1) + std::size_t(i)];
+    if(w == Mesh::null_vertex())
+    {
+      const double x = -1 + 2.0 * i / n, y = -1 + 2.0 * j / n;
+      w = m.add_vertex(Point(x, y, 0.35 * (x * x - y * y) + 0.08 * std::sin(2.5 * x + 1.3 * y)));
+    }
+    return w;
+  };
+  for(int j = 0; j < n; ++j)
+    for(int i = 0; i < n; ++i)
+      if(inside(i, j))
+        m.add_face(id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+  return m;
+}
+
+// The process's high-water mark of resident memory (VmHWM) in MB since the
+// last reset_peak_memory(), -1 where /proc is not available.
 inline double peak_memory_mb()
 {
   std::ifstream status("/proc/self/status");
@@ -43,6 +74,16 @@ inline double peak_memory_mb()
     if(line.rfind("VmHWM:", 0) == 0)
       return std::stod(line.substr(6)) / 1024.0; // kB
   return -1;
+}
+
+// Sets the high-water mark to the current resident memory (Linux 4.0 and
+// later), so that each run's peak is its own; false where that is not
+// possible (the mark then only grows: measure sizes in increasing order).
+inline bool reset_peak_memory()
+{
+  std::ofstream clear_refs("/proc/self/clear_refs");
+  clear_refs << "5";
+  return bool(clear_refs.flush());
 }
 
 } // namespace benchmark_surfaces

@@ -533,9 +533,20 @@ int run(const Options& o)
               << " panels are cut from a mirrored mold\n";
   }
   if(!result.is_tilable())
+  {
     std::cerr << "[k_set_tilable] WARNING: not every panel fits its mold "
               << (m.requires_planar_tiles ? "and is planar " : "")
               << "within 1e-6 of the mean edge length; see the report's per-cluster congruence errors\n";
+    if(result.optimization.stalled)
+      std::cerr << "[k_set_tilable] no exact solution near the input for this clustering: the solver stalled at "
+                << std::scientific << std::setprecision(2) << m.congruence_error << std::defaultfloat
+                << " with iterations left, after " << result.clustering.number_of_edit_rounds
+                << " rounds of split and merge (improvement and repair); more iterations would not help, a larger K may"
+                << (o.max_deviation >= 0 ? "" : " (--max-deviation D searches the smallest K within D)") << "\n";
+    else if(!result.optimization.stopped_by_visitor)
+      std::cerr << "[k_set_tilable] the solver used all its " << result.optimization.iterations
+                << " iterations: more (--iterations N) may make it tilable\n";
+  }
   if(m.self_intersecting_face_pairs > 0)
     std::cerr << "[k_set_tilable] WARNING: the result crosses itself (" << m.self_intersecting_face_pairs
               << " pairs of panels intersect); it cannot be built as it is: try a larger K\n";

@@ -227,6 +227,47 @@ TEST(Optimize, VisitorStopsEarly)
   EXPECT_TRUE(points_of(untouched) == before);
 }
 
+// Three quads in a row between x = 0, 1, 2 and 4 (height 1), in one
+// cluster, every vertex fixed but the two at x = 2: a unit square and two
+// quads that span 3 between fixed ends cannot fit one mold. By hand: the
+// free bottom vertex p makes the two bottom edges |p - (1,0)| + |(4,0) - p|
+// >= 3 long, so one is at least 1.5 against the square's 1 at every edge;
+// corners within d of the mold's keep each edge within 2d of its length, so
+// d >= 0.5 / 4. The solver moves p, then must end before its iteration limit
+// and say that it stalled. Given one iteration on a clustering it can make
+// exact, it must say that the iterations ran out.
+TEST(Optimize, SaysWhetherItStalledOrRanOutOfIterations)
+{
+  Mesh row;
+  std::vector<Vertex> v;
+  for(double y : {0.0, 1.0})
+    for(double x : {0.0, 1.0, 2.0, 4.0})
+      v.push_back(row.add_vertex(Point(x, y, 0)));
+  for(int i = 0; i < 3; ++i)
+    row.add_face(v[i], v[i + 1], v[i + 5], v[i + 4]);
+  Clustering c = single_cluster(row);
+  auto fixed = row.add_property_map<Vertex, bool>("v:fixed", true).first;
+  fixed[v[2]] = fixed[v[6]] = false;
+  const int limit = 200;
+  const TS::Optimization_result r = TS::optimize_tilable_surface(
+    row, clustering_parameters(c, TS::parameters::vertex_is_constrained_map(fixed).number_of_iterations(limit)));
+  print("a unit square and two quads over 3 in one cluster, ends fixed", row, r);
+  EXPECT_FALSE(r.converged);
+  EXPECT_GE(r.measure.congruence_error * TS::mean_edge_length(row), 0.125 - 1e-9);
+  EXPECT_GT(r.iterations, 0);
+  EXPECT_LT(r.iterations, limit);
+  EXPECT_TRUE(r.stalled);
+  EXPECT_STREQ(r.ending(), "stalled");
+
+  Mesh saddle = load("monkey_saddle.off");
+  const TS::Optimization_result one = TS::optimize_tilable_surface(
+    saddle, clustering_parameters(single_cluster(saddle), TS::parameters::number_of_iterations(1)));
+  EXPECT_FALSE(one.converged);
+  EXPECT_EQ(one.iterations, 1);
+  EXPECT_FALSE(one.stalled);
+  EXPECT_STREQ(one.ending(), "iteration limit");
+}
+
 TEST(Optimize, InvalidInputThrowsBeforeTouchingTheMesh)
 {
   Mesh mesh = load("monkey_saddle.off");

@@ -453,6 +453,7 @@ public:
                           " candidates of smallest predicted displacement or length spread, or first segment "
                           "clusterings, then " + std::to_string(rounds_done) + " improvement or repair rounds") +
       "; " + m_clustering.choice_reason;
+    m_clustering.number_of_edit_rounds = std::size_t(rounds_done);
     return m_optimization;
   }
 

@@ -118,6 +118,11 @@ struct Clustering_result
   std::size_t chosen_candidate = 0;
   /// Why it was chosen, in words.
   std::string choice_reason;
+  /// The rounds of split-and-merge edits that
+  /// `K_set_tilable_surface::optimize_closest()` made after the candidates
+  /// (improvement rounds, and repair rounds while the result was not
+  /// tilable), whether kept or not; 0 from `cluster_quads()`.
+  std::size_t number_of_edit_rounds = 0;
 };
 
 namespace internal {

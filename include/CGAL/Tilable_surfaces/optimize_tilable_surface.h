@@ -48,6 +48,21 @@ struct Optimization_result
   /// is at most `congruence_tolerance`, and with `planar_tiles` the measured
   /// `measure.planarity_error` too; never set from the solver's energy.
   bool converged = false;
+  /// Whether the result is not tilable although the solver ended before its
+  /// iteration limit, unstopped: its congruence error had stopped decreasing
+  /// (in every attempt of `CONSTRAINED_GAUSS_NEWTON`, see `Solver_type`). The
+  /// clustering then has no exact realization that the solver, which keeps
+  /// close to the input, reaches: more iterations would not help; another
+  /// clustering (the repair rounds of `make_k_set_tilable()`) or a larger K
+  /// may. Not tilable, unstopped and not stalled means the iterations ran out.
+  bool stalled = false;
+  /// Why the solve ended, in words: "tilable", "stopped by the visitor",
+  /// "stalled" (see `stalled`) or "iteration limit".
+  const char* ending() const
+  {
+    return converged ? "tilable"
+                     : (stopped_by_visitor ? "stopped by the visitor" : (stalled ? "stalled" : "iteration limit"));
+  }
   /// The paper's five terms at the result, on positions normalized like the
   /// solver's (centred, unit bounding-box diagonal of the input).
   Energy_terms energy;
@@ -258,6 +273,7 @@ Optimization_result optimize_tilable_surface(Validated_mesh, PolygonMesh& pm, co
       result.energy = paper_energy(problem, setup.D, X, X0);
     }
   }
+  result.stalled = !result.converged && !result.stopped_by_visitor && report.iterations < settings.max_iterations;
   result.measure_time = timer.time();
 
   VertexPointMap vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),

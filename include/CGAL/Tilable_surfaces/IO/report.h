@@ -57,7 +57,9 @@ inline nlohmann::json tile_count_trials_json(const std::vector<Tile_count_trial>
 /// the input both ways and the symmetric Hausdorff distance (max and mean,
 /// relative to the input's bounding-box diagonal and in its mean edge lengths),
 /// displacement (mesh units), the paper's normalized terms, solver
-/// iterations, whether the result is tilable, the clustering's choice,
+/// iterations and why the solve ended (`Optimization_result::ending()`),
+/// whether the result is tilable, the clustering's choice and the rounds
+/// of split-and-merge edits after it,
 /// the time of each phase in seconds, and the K tried by a deviation search
 /// (`tried_K`, empty when K was given). Callers add what only they know
 /// (input name, parameters) to the returned object.
@@ -106,6 +108,7 @@ inline nlohmann::json tilability_report_json(const K_set_tilable_result& r,
     {"optimization",
      {{"iterations", r.optimization.iterations},
       {"converged", r.optimization.converged},
+      {"ending", r.optimization.ending()},
       {"objective", r.optimization.objective}}},
     {"clustering",
      {{"path", r.clustering.path == EXACT_PATH ? "exact" : "descriptor"},
@@ -113,7 +116,8 @@ inline nlohmann::json tilability_report_json(const K_set_tilable_result& r,
       {"total_weight", r.clustering.total_weight},
       {"weights_are_exact", r.clustering.weights_are_exact},
       {"degree_of_flexibility", r.clustering.degree_of_flexibility},
-      {"choice", r.clustering.choice_reason}}},
+      {"choice", r.clustering.choice_reason},
+      {"edit_rounds", r.clustering.number_of_edit_rounds}}},
     {"tried_K", tile_count_trials_json(r.trials)},
     {"time_seconds",
      {{"validation", r.validation_time},

@@ -7,10 +7,9 @@
 // phase (validation, clustering, the displacement prediction that ranks the
 // candidate clusterings, their optimization, the improvement rounds, with
 // the sweep clusterings solved first from their exact start), the total,
-// the peak memory, the
-// congruence error, the number of distinct S-quads, the symmetric
-// Hausdorff distance to the input and the pairs of faces of the result that
-// cross each other; then the exponent a of a least-squares fit
+// the peak memory, the congruence error, the number of distinct S-quads, the
+// symmetric Hausdorff distance to the input and the pairs of faces of the
+// result that cross each other; then the exponent a of a least-squares fit
 // time ~ quads^a over the sizes that finished, and again over those above
 // `large_mesh_faces`, which take another path (the search ends at an exact
 // sweep, no candidate is solved from the input), for each surface. The peak

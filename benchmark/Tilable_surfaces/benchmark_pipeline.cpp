@@ -36,15 +36,14 @@
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
 #include <iostream>
 #include <map>
+#include <sstream>
 #include <string>
-#include <utility>
 #include <vector>
 
 namespace TS = CGAL::Tilable_surfaces;
@@ -102,13 +101,14 @@ double growth_exponent(const std::vector<double>& x, const std::vector<double>& 
   return sxy / sxx;
 }
 
-void print_growth(const std::vector<double>& sizes, const std::vector<double>& times, const char* which)
+void print_growth(std::ostream& out, const char* surface, const std::vector<double>& sizes,
+                  const std::vector<double>& times, const char* which)
 {
+  out << surface << ": ";
   if(sizes.size() >= 2)
-    std::cout << "time ~ quads^" << growth_exponent(sizes, times) << " over " << which << " ("
-              << sizes.size() << ")\n";
+    out << "time ~ quads^" << growth_exponent(sizes, times) << " over " << which << " (" << sizes.size() << ")\n";
   else
-    std::cout << "fewer than two of " << which << ": no growth exponent\n";
+    out << "fewer than two of " << which << ": no growth exponent\n";
 }
 
 // One run of the pipeline on `mesh`, as a table row; false if it was stopped.
@@ -189,7 +189,9 @@ int main(int argc, char** argv)
   if(!files.empty())
     return EXIT_SUCCESS;
 
-  // One series of sizes of a generated surface, then its growth exponents.
+  // One series of sizes of a generated surface; its growth exponents are
+  // printed after the table.
+  std::ostringstream growth;
   auto series = [&](const char* name, auto generate, std::initializer_list<int> resolutions) {
     std::vector<double> sizes, times, large_sizes, large_times;
     for(int n : resolutions)
@@ -209,16 +211,12 @@ int main(int argc, char** argv)
         }
       }
     }
-    return std::array<std::vector<double>, 4>{sizes, times, large_sizes, large_times};
+    growth << '\n';
+    print_growth(growth, name, sizes, times, "the sizes that finished");
+    print_growth(growth, name, large_sizes, large_times, "the sizes above large_mesh_faces that finished");
   };
-  const auto shell = series("seashell", benchmark_surfaces::seashell<Mesh>, {32, 100, 141, 224, 316});
-  const auto roof = series("trimmed roof", benchmark_surfaces::trimmed_roof<Mesh>, {41, 130, 409});
-  for(const auto& [name, s] : {std::pair<const char*, decltype(shell)>{"seashell", shell}, {"trimmed roof", roof}})
-  {
-    std::cout << '\n' << name << ": ";
-    print_growth(s[0], s[1], "the sizes that finished");
-    std::cout << name << ": ";
-    print_growth(s[2], s[3], "the sizes above large_mesh_faces that finished");
-  }
+  series("seashell", benchmark_surfaces::seashell<Mesh>, {32, 100, 141, 224, 316});
+  series("trimmed roof", benchmark_surfaces::trimmed_roof<Mesh>, {41, 130, 409});
+  std::cout << growth.str();
   return EXIT_SUCCESS;
 }

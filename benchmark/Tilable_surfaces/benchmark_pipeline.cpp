@@ -1,9 +1,10 @@
 // The whole pipeline of make_k_set_tilable() from ~1k to ~100k quads.
 //
-// On two generated surfaces (benchmark_surfaces.h) at K = 100, the seashell
-// parametrization (a full grid closed around its tube) and a saddle roof
-// trimmed by an elliptic outline (a grid whose rows have different lengths),
-// from about 1k to 100k quads, it prints a markdown table: the time of each
+// On three generated surfaces (benchmark_surfaces.h) at K = 100, the
+// seashell parametrization (a full grid closed around its tube), a saddle
+// roof trimmed by an elliptic outline (a grid whose rows have different
+// lengths) and an oval torus (a grid closed both ways), from about 1k to
+// 100k quads, it prints a markdown table: the time of each
 // phase (validation, clustering, the displacement prediction that ranks the
 // candidate clusterings, their optimization, the improvement rounds, with
 // the sweep clusterings solved first from their exact start), the total,
@@ -217,6 +218,7 @@ int main(int argc, char** argv)
   };
   series("seashell", benchmark_surfaces::seashell<Mesh>, {32, 100, 141, 224, 316});
   series("trimmed roof", benchmark_surfaces::trimmed_roof<Mesh>, {41, 130, 409});
+  series("oval torus", benchmark_surfaces::oval_torus<Mesh>, {32, 100, 316});
   std::cout << growth.str();
   return EXIT_SUCCESS;
 }

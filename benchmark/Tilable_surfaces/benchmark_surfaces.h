@@ -64,6 +64,29 @@ Mesh trimmed_roof(int n)
   return m;
 }
 
+// A torus closed both ways on an n x n grid (n^2 quads): its tube, a circle
+// of radius 1, runs at the distance 3 + 0.5 cos 2t from the z axis, an oval,
+// so that no two of its loops are congruent.
+template <typename Mesh>
+Mesh oval_torus(int n)
+{
+  typedef typename Mesh::Point Point;
+  Mesh m;
+  std::vector<typename Mesh::Vertex_index> v;
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < n; ++j)
+    {
+      const double t = 2 * M_PI * i / n, s = 2 * M_PI * j / n;
+      const double out = 3 + 0.5 * std::cos(2 * t) + std::cos(s);
+      v.push_back(m.add_vertex(Point(out * std::cos(t), out * std::sin(t), std::sin(s))));
+    }
+  auto id = [&](int i, int j) { return v[std::size_t((i % n) * n + (j % n))]; };
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < n; ++j)
+      m.add_face(id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+  return m;
+}
+
 // The process's high-water mark of resident memory (VmHWM) in MB since the
 // last reset_peak_memory(), -1 where /proc is not available.
 inline double peak_memory_mb()

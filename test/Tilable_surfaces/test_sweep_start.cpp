@@ -40,6 +40,32 @@ std::vector<std::vector<std::size_t> > sweeps(const Mesh& m, std::size_t k)
                                 TS::PROPER_RIGID_MOTIONS);
 }
 
+// The sweeps of `m`, a tube of loops of `around` quads (face i * around + j),
+// whose rows are its loops: not those whose rows run along the tube and
+// close up around it (rotation sweeps), each of whose clusters holds whole
+// loops or lies within one.
+std::vector<std::vector<std::size_t> > loop_sweeps(const Mesh& m, std::size_t k, int around)
+{
+  std::vector<std::vector<std::size_t> > result;
+  for(const std::vector<std::size_t>& label : sweeps(m, k))
+  {
+    std::map<std::size_t, std::set<std::size_t> > loops;
+    std::map<std::size_t, std::size_t> size;
+    for(std::size_t f = 0; f < label.size(); ++f)
+    {
+      loops[label[f]].insert(f / std::size_t(around));
+      ++size[label[f]];
+    }
+    bool around_the_tube = true;
+    for(const auto& cluster : loops)
+      around_the_tube = around_the_tube && (cluster.second.size() == 1 ||
+                                            size[cluster.first] == cluster.second.size() * std::size_t(around));
+    if(!around_the_tube)
+      result.push_back(label);
+  }
+  return result;
+}
+
 TSI::Point_matrix start_of(const Mesh& m, const std::vector<std::size_t>& label)
 {
   return TSI::sweep_start(m, get(CGAL::face_index, m), get(CGAL::vertex_index, m), get(CGAL::vertex_point, m),
@@ -82,13 +108,15 @@ double ring_spread(const TSI::Point_matrix& points)
 
 } // namespace
 
-// With K = 8 molds on rings of 8 quads, the one sweep is the columns: face
-// (i, j) in cluster j (numbered by first face). The other grid direction
-// has rows of 9 quads, more than K.
+// With K = 8 molds on rings of 8 quads, the one sweep along the horn is the
+// columns: face (i, j) in cluster j (numbered by first face). The other
+// grid direction, rows along the horn closed around it, has one rotation
+// sweep whose 9 columns are cut into 8 runs.
 TEST(SweepStart, EightMoldsAreTheEightColumns)
 {
   const Mesh m = growing_horn();
-  const std::vector<std::vector<std::size_t> > labels = sweeps(m, 8);
+  EXPECT_EQ(sweeps(m, 8).size(), 2u);
+  const std::vector<std::vector<std::size_t> > labels = loop_sweeps(m, 8, around);
   ASSERT_EQ(labels.size(), 1u);
   for(int f = 0; f < rings * around; ++f)
     EXPECT_EQ(labels[0][std::size_t(f)], std::size_t(f % around)) << "face " << f;
@@ -100,7 +128,7 @@ TEST(SweepStart, EightMoldsAreTheEightColumns)
 TEST(SweepStart, LeftoverMoldsSplitColumns)
 {
   const Mesh m = growing_horn();
-  const std::vector<std::vector<std::size_t> > labels = sweeps(m, 19);
+  const std::vector<std::vector<std::size_t> > labels = loop_sweeps(m, 19, around);
   ASSERT_EQ(labels.size(), 1u);
   const std::vector<std::size_t>& l = labels[0];
   EXPECT_EQ(std::set<std::size_t>(l.begin(), l.end()).size(), 19u);
@@ -126,7 +154,7 @@ TEST(SweepStart, StartIsOneSectionSweptAndExact)
   EXPECT_GT(ring_spread(TSI::read_points(m, get(CGAL::vertex_point, m), get(CGAL::vertex_index, m))), 0.1);
   for(std::size_t k : {8u, 19u})
   {
-    const std::vector<std::size_t> label = sweeps(m, k).at(0);
+    const std::vector<std::size_t> label = loop_sweeps(m, k, around).at(0);
     const TSI::Point_matrix start = start_of(m, label);
     ASSERT_EQ(start.rows(), rings * around + around);
     EXPECT_LE(ring_spread(start), 1e-12);
@@ -169,7 +197,7 @@ TEST(SweepStart, PrismSidesAreColumnRunsAlready)
     return Point(corner[side][0] + t * (corner[side + 1][0] - corner[side][0]),
                  corner[side][1] + t * (corner[side + 1][1] - corner[side][1]), 0.3 * i);
   });
-  const std::vector<std::vector<std::size_t> > labels = sweeps(m, 8);
+  const std::vector<std::vector<std::size_t> > labels = loop_sweeps(m, 8, columns);
   ASSERT_EQ(labels.size(), 1u);
   expect_column_runs(labels[0], columns, 8);
   const TSI::Point_matrix start = start_of(m, labels[0]);
@@ -186,7 +214,7 @@ TEST(SweepStart, MoreColumnsThanMoldsAreCutIntoRuns)
 {
   const int columns = 24;
   const Mesh m = horn<Mesh>(rings, columns, 3.0, 2.0, [](int i) { return 1.0 + 0.075 * i; });
-  const std::vector<std::vector<std::size_t> > labels = sweeps(m, 10);
+  const std::vector<std::vector<std::size_t> > labels = loop_sweeps(m, 10, columns);
   ASSERT_EQ(labels.size(), 1u);
   expect_column_runs(labels[0], columns, 10);
   Mesh input = m;
@@ -230,31 +258,114 @@ TEST(SweepStart, ColumnRunsNeverCollapse)
   }
 }
 
-// A cluster across two columns, or a grid closed both ways, has no sweep.
-TEST(SweepStart, NoneWhenAClusterCrossesColumnsOrTheGridCloses)
+// A cluster across two columns has no sweep.
+TEST(SweepStart, NoneWhenAClusterCrossesColumns)
 {
   const Mesh m = growing_horn();
-  std::vector<std::size_t> label = sweeps(m, 8).at(0);
+  std::vector<std::size_t> label = loop_sweeps(m, 8, around).at(0);
   label[1] = label[0];  // face (0, 1) joins column 0
   EXPECT_EQ(start_of(m, label).rows(), 0);
+}
 
-  // A torus of 6 x 8 quads: the rows meet again.
-  Mesh torus;
-  std::vector<Vertex> v;
-  for(int i = 0; i < 6; ++i)
-    for(int j = 0; j < 8; ++j)
-    {
-      const double t = 2 * CGAL_PI * i / 6, a = 2 * CGAL_PI * j / 8, out = 3 + std::cos(a);
-      v.push_back(torus.add_vertex(Point(out * std::cos(t), out * std::sin(t), std::sin(a))));
-    }
-  for(int i = 0; i < 6; ++i)
-    for(int j = 0; j < 8; ++j)
-      torus.add_face(v[i * 8 + j], v[i * 8 + (j + 1) % 8], v[((i + 1) % 6) * 8 + (j + 1) % 8],
-                     v[((i + 1) % 6) * 8 + j]);
-  EXPECT_TRUE(sweeps(torus, 8).empty());
-  std::vector<std::size_t> columns(48);
-  for(std::size_t f = 0; f < 48; ++f) columns[f] = f % 8;
-  EXPECT_EQ(start_of(torus, columns).rows(), 0);
+namespace {
+
+const int torus_rows = 12;
+
+// A torus of 12 x `around` quads about the z axis whose tube runs at the
+// distance 3 + 0.5 cos 2t from it (an oval): loop i at t = 2 pi i / 12 is
+// the circle of radius 1 about that point, in the plane through the z axis.
+Mesh oval_torus(int around)
+{
+  return swept_tube<Mesh>(torus_rows, around, [&](int i, int j) {
+    const double t = 2 * CGAL_PI * i / torus_rows, a = 2 * CGAL_PI * j / around;
+    const double out = 3 + 0.5 * std::cos(2 * t) + std::cos(a);
+    return Point(out * std::cos(t), out * std::sin(t), std::sin(a));
+  }, true);
+}
+
+// The loops of `points` (vertex index i * around + j) as columns.
+Eigen::Matrix3Xd loop(const TSI::Point_matrix& points, int i, int around)
+{
+  return points.middleRows(i * around, around).transpose();
+}
+
+// The largest distance between M^i applied to loop 0 and loop i, where M is
+// the rigid motion that best maps loop 0 onto loop 1 (Umeyama, no scale).
+double distance_from_rotation_sweep(const TSI::Point_matrix& points, int around)
+{
+  const Eigen::Matrix4d m = Eigen::umeyama(loop(points, 0, around), loop(points, 1, around), false);
+  Eigen::Matrix4d power = Eigen::Matrix4d::Identity();
+  double worst = 0;
+  for(int i = 0; i <= torus_rows; ++i, power = m * power)
+    worst = (std::max)(worst, (TSI::apply_motion(power, loop(points, 0, around)) -
+                               loop(points, i % torus_rows, around)).colwise().norm().maxCoeff());
+  return worst;
+}
+
+} // namespace
+
+// A grid closed across its rows sweeps as a rotation that closes up: on the
+// oval torus (no two loops congruent), with K = 8 molds for 8 quads per
+// loop, the columns are a sweep clustering, exact at its start (checked
+// independently), where each loop is the first turned by i twelfths of a
+// turn about one axis. By the torus's symmetries that axis is z and the
+// section is the mean loop, the circle at distance 3 (the mean of
+// 0.5 cos 2t over the twelve loops is 0): every vertex moves by
+// |0.5 cos 2t| at most, 0.5 at t = 0.
+TEST(SweepStart, ClosedGridSweepsAsARotation)
+{
+  const int around = 8;
+  const Mesh m = oval_torus(around);
+  const TSI::Point_matrix input = TSI::read_points(m, get(CGAL::vertex_point, m), get(CGAL::vertex_index, m));
+  EXPECT_GT(distance_from_rotation_sweep(input, around), 0.1);
+  std::vector<std::size_t> columns(std::size_t(torus_rows * around));
+  for(std::size_t f = 0; f < columns.size(); ++f)
+    columns[f] = f % around;
+  const std::vector<std::vector<std::size_t> > labels = sweeps(m, around);
+  EXPECT_EQ(std::count(labels.begin(), labels.end(), columns), 1);
+  const TSI::Point_matrix start = start_of(m, columns);
+  ASSERT_EQ(start.rows(), torus_rows * around);
+  EXPECT_LE(distance_from_rotation_sweep(start, around), 1e-9);
+  EXPECT_NEAR((start - input).rowwise().norm().maxCoeff(), 0.5, 1e-9);
+  Mesh moved = moved_to(m, start);
+  const Clustering c = clustered(moved, columns);
+  EXPECT_LE(congruence_by_umeyama(moved, c.cluster, c.orientation), 1e-9);
+}
+
+// With more columns than molds (16 quads per loop, K = 6), the closed sweep
+// cuts its columns into 6 runs; its start is exact, checked independently,
+// and still a rotation sweep.
+TEST(SweepStart, ClosedGridWithMoreColumnsThanMolds)
+{
+  const int around = 16;
+  const Mesh m = oval_torus(around);
+  bool found = false;
+  for(const std::vector<std::size_t>& label : sweeps(m, 6))
+  {
+    const TSI::Point_matrix start = start_of(m, label);
+    if(start.rows() == 0 || label[1] != label[around + 1])
+      continue;  // the other grid direction, or none
+    found = true;
+    expect_column_runs(label, around, 6);
+    EXPECT_LE(distance_from_rotation_sweep(start, around), 1e-9);
+    Mesh moved = moved_to(m, start);
+    const Clustering c = clustered(moved, label);
+    EXPECT_LE(congruence_by_umeyama(moved, c.cluster, c.orientation), 1e-9);
+  }
+  EXPECT_TRUE(found);
+}
+
+// make_k_set_tilable() on the oval torus at K = 8 with no solver iteration
+// ends tilable, checked independently: only the closed sweep is exact.
+TEST(SweepStart, PipelineMakesAClosedGridTilable)
+{
+  Mesh m = oval_torus(8);
+  Clustering c = add_clustering_maps(m);
+  const TS::K_set_tilable_result r = TS::make_k_set_tilable(
+    m, TS::parameters::number_of_tiles(8).number_of_iterations(0).face_cluster_map(c.cluster).face_orientation_map(c.orientation));
+  EXPECT_TRUE(r.is_tilable());
+  EXPECT_EQ(r.clustering.candidates[r.clustering.chosen_candidate].origin, TS::Clustering_candidate::GRID_SWEEPS);
+  EXPECT_LE(congruence_by_umeyama(m, c.cluster, c.orientation), 1e-6);
 }
 
 // make_k_set_tilable() at K = 8 on the growing horn ends tilable, checked
@@ -292,7 +403,7 @@ TEST(SweepStart, SolveFromTheStartNeverEndsFarther)
   const Mesh input = growing_horn();
   for(std::size_t k : {8u, 19u})
   {
-    const std::vector<std::size_t> label = sweeps(input, k).at(0);
+    const std::vector<std::size_t> label = loop_sweeps(input, k, around).at(0);
     const TSI::Point_matrix start = start_of(input, label);
     Mesh swept = moved_to(input, start);
     const Clustering s = clustered(swept, label);
@@ -368,6 +479,21 @@ Clustering clustered(Mesh& m, const std::vector<std::size_t>& label,
   return c;
 }
 
+// The sweep clustering `label` of `m` is not exact at the input, and exact
+// at its start, which places every vertex; checked independently.
+void expect_exact_only_at_start(const Mesh& m, const std::vector<std::size_t>& label)
+{
+  std::vector<TS::Quad_orientation> orientation;
+  const TSI::Point_matrix start = start_of(m, label, orientation);
+  ASSERT_EQ(std::size_t(start.rows()), num_vertices(m));
+  Mesh input = m;
+  const Clustering at_input = clustered(input, label, orientation);
+  EXPECT_GT(congruence_by_umeyama(input, at_input.cluster, at_input.orientation), 1e-3);
+  Mesh moved = moved_to(m, start);
+  const Clustering c = clustered(moved, label, orientation);
+  EXPECT_LE(congruence_by_umeyama(moved, c.cluster, c.orientation), 1e-9);
+}
+
 } // namespace
 
 // A trimmed grid has rows of different lengths; with fewer molds than
@@ -383,16 +509,44 @@ TEST(SweepStart, TrimmedGridsAreSweptByColumnRuns)
   for(const std::vector<std::size_t>& label : labels)
   {
     EXPECT_EQ(std::set<std::size_t>(label.begin(), label.end()).size(), 6u);
-    std::vector<TS::Quad_orientation> orientation;
-    const TSI::Point_matrix start = start_of(m, label, orientation);
-    ASSERT_EQ(std::size_t(start.rows()), num_vertices(m));
-    Mesh input = m;
-    const Clustering at_input = clustered(input, label, orientation);
-    EXPECT_GT(congruence_by_umeyama(input, at_input.cluster, at_input.orientation), 1e-3);
-    Mesh moved = moved_to(m, start);
-    const Clustering c = clustered(moved, label, orientation);
-    EXPECT_LE(congruence_by_umeyama(moved, c.cluster, c.orientation), 1e-9);
+    expect_exact_only_at_start(m, label);
   }
+}
+
+// With more molds than columns (K = 24 on 16 x 20), a trimmed grid is swept
+// as one run of rows, every column of each direction cut into pieces of
+// consecutive quads: 24 clusters, each within one grid line (face (i, j)
+// has its lowest corner at (0.1 i, 0.1 j)), none at the input exact, every
+// one at the start, checked independently.
+TEST(SweepStart, TrimmedGridWithFewColumnsIsOneRun)
+{
+  const Mesh m = trimmed_roof();
+  const std::vector<std::vector<std::size_t> > labels = sweeps(m, 24);
+  ASSERT_EQ(labels.size(), 2u);
+  std::set<int> directions;
+  for(const std::vector<std::size_t>& label : labels)
+  {
+    EXPECT_EQ(std::set<std::size_t>(label.begin(), label.end()).size(), 24u);
+    // Per cluster, the grid lines i and j of its faces.
+    std::vector<std::set<long> > lines_i(24), lines_j(24);
+    for(Face f : faces(m))
+    {
+      double x = std::numeric_limits<double>::max(), y = x;
+      for(Vertex v : vertices_around_face(halfedge(f, m), m))
+      {
+        x = (std::min)(x, m.point(v).x());
+        y = (std::min)(y, m.point(v).y());
+      }
+      lines_i[label[std::size_t(f)]].insert(std::lround(10 * x));
+      lines_j[label[std::size_t(f)]].insert(std::lround(10 * y));
+    }
+    const int direction = lines_i[0].size() == 1 ? 0 : 1;
+    directions.insert(direction);
+    for(std::size_t l = 0; l < 24; ++l)
+      EXPECT_EQ((direction == 0 ? lines_i : lines_j)[l].size(), 1u) << "cluster " << l;
+    expect_exact_only_at_start(m, label);
+  }
+  EXPECT_EQ(directions.size(), 2u);
 }
 
 // A trimmed piece of a cylinder, axis z, 0.1 radians per column: each

@@ -24,8 +24,13 @@
 //
 // A grid trimmed by its outline (trimmed_grid.h) has rings with points
 // missing: the motion is fitted on the pairs present, the section is the
-// mean of the points present; only its column runs apply, runs of rows
-// needing whole rows.
+// mean of the points present; it is one run of rows (runs of rows need
+// whole rows), with more columns than molds cut into column runs, else
+// every column cut into pieces of consecutive quads (split_columns_to()).
+//
+// A grid closed across its rows (ring R is ring 0) is one run whose M^R
+// must be the identity: M is made a rotation by a whole number of turns
+// over the R rows (close_up()), and the swept surface is one of revolution.
 
 #include <CGAL/Tilable_surfaces/internal/Clustering/segment_candidates.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/trimmed_grid.h>
@@ -41,10 +46,11 @@ namespace CGAL {
 namespace Tilable_surfaces {
 namespace internal {
 
-// Whether the last row of `grid` meets the first (a torus): no sweep closes
-// up on itself. The first quad of the last row then shares its corners with
-// the first quad of the first row, beyond the edge that two rows share
-// anyway when there are only two.
+// Whether the last row of `grid` meets the first (a torus, or a tube swept
+// about its axis): a sweep then closes up only as a rotation whose rows-th
+// power is the identity (swept_section()). The first quad of the last row
+// shares its corners with the first quad of the first row, beyond the edge
+// that two rows share anyway when there are only two.
 inline bool closed_across_rows(const Quad_grid& grid)
 {
   const Panel& first = grid.corners[grid.face_at[0]];
@@ -56,18 +62,18 @@ inline bool closed_across_rows(const Quad_grid& grid)
 }
 
 // The rings of `grid` (rows + 1 of them, each of columns vertices, one more
-// when the rows are open), in grid order, as given by `corner(r, c, i)`: a
+// when the rings are open), in grid order, as given by `corner(r, c, i)`: a
 // vertex index or a point of corner i of the quad of row r and column c.
 // The quad of row r and column c has its corners on rings r and r + 1 at
-// positions c and c + 1. Empty when the rows do not share rings as a grid
-// does, or the grid is closed across its rows (the first ring is the last).
+// positions c and c + 1; when the grid is closed across its rows, the last
+// ring is the first. Empty when the rows do not share rings as a grid does.
 template <typename Corner>
 auto grid_rings(const Quad_grid& grid, Corner corner)
   -> std::vector<std::vector<decltype(corner(std::size_t(0), std::size_t(0), 0))> >
 {
   typedef std::vector<decltype(corner(std::size_t(0), std::size_t(0), 0))> Ring;
   const std::size_t rows = grid.rows, columns = grid.columns;
-  if(rows == 0 || closed_across_rows(grid))
+  if(rows == 0)
     return {};
   // Corners 0 and 1 of every face of a row lie on one ring, 3 and 2 on the
   // other; corner 0 of column c is corner 1 of column c + 1.
@@ -178,11 +184,34 @@ struct Swept_section
 // ill-conditioned, and a translation commutes with the straight runs.
 constexpr double screw_angle_min = 1e-6;
 
+// The rigid motion closest to `m` whose `rows`-th power is the identity: a
+// rotation about m's axis by a whole number of turns over the rows, at
+// least one. False when m turns by less than half a row's share of a turn.
+inline bool close_up(Eigen::Matrix4d& m, std::size_t rows)
+{
+  const Eigen::AngleAxisd turn(Eigen::Matrix3d(m.topLeftCorner<3, 3>()));
+  const double turns = std::round(turn.angle() * double(rows) / (2 * CGAL_PI));
+  if(turns < 1)
+    return false;
+  // A point of the axis: the least-squares solution of (I - R) o = t - (t.a) a.
+  const Eigen::Vector3d axis = turn.axis(), t = m.topRightCorner<3, 1>();
+  const Eigen::Matrix3d i_minus_r = Eigen::Matrix3d::Identity() - m.topLeftCorner<3, 3>();
+  const Eigen::Vector3d o =
+    i_minus_r.jacobiSvd(Eigen::ComputeFullU | Eigen::ComputeFullV).solve(t - t.dot(axis) * axis);
+  const Eigen::Matrix3d r = Eigen::AngleAxisd(2 * CGAL_PI * turns / double(rows), axis).toRotationMatrix();
+  m.setIdentity();
+  m.topLeftCorner<3, 3>() = r;
+  m.topRightCorner<3, 1>() = o - r * o;
+  return true;
+}
+
 // `ring`: the input rings, `run_of`: the run of each row, `present`: per
 // ring, 1 or 0 per point (present_grid_rings()). With `column_runs`, a single
 // run whose motion hardly turns is made a translation (screw_angle_min).
+// With `closed` (the last ring is the first), a single run whose motion is
+// made to close up (close_up()).
 inline Swept_section swept_section(const std::vector<Eigen::Matrix3Xd>& ring, const std::vector<std::size_t>& run_of,
-                                   bool column_runs, const std::vector<Eigen::ArrayXd>& present)
+                                   bool column_runs, const std::vector<Eigen::ArrayXd>& present, bool closed = false)
 {
   Swept_section s;
   const std::size_t rows = run_of.size(), runs = run_of.back() + 1;
@@ -211,6 +240,11 @@ inline Swept_section swept_section(const std::vector<Eigen::Matrix3Xd>& ring, co
     s.motion[r] = Eigen::umeyama(from.leftCols(pairs), to.leftCols(pairs), false);
     a = b;
   }
+  if(closed && (runs > 1 || !close_up(s.motion[0], rows)))
+  {
+    s.valid = false;
+    return s;
+  }
   if(column_runs && Eigen::AngleAxisd(Eigen::Matrix3d(s.motion[0].topLeftCorner<3, 3>())).angle() < screw_angle_min)
     s.motion[0].topLeftCorner<3, 3>().setIdentity();
   const std::size_t middle = rows / 2;
@@ -221,7 +255,7 @@ inline Swept_section swept_section(const std::vector<Eigen::Matrix3Xd>& ring, co
     s.frame[i - 1] = s.motion[run_of[i - 1]].inverse() * s.frame[i];
   s.section = Eigen::Matrix3Xd::Zero(3, width);
   Eigen::ArrayXd count = Eigen::ArrayXd::Zero(width);
-  for(std::size_t i = 0; i <= rows; ++i)
+  for(std::size_t i = 0; i + (closed ? 1 : 0) <= rows; ++i)
   {
     const Eigen::Matrix3Xd pulled = apply_motion(s.frame[i].inverse(), ring[i]);
     for(Eigen::Index j = 0; j < width; ++j)
@@ -491,7 +525,8 @@ inline std::vector<std::size_t> screw_column_sweep(const Quad_grid& grid, const 
   for(std::size_t i = 0; i < rings.size(); ++i)
     for(std::size_t j = 0; j < rings[i].size(); ++j)
       ring[i].col(Eigen::Index(j)) = rings[i][j];
-  const Swept_section swept = swept_section(ring, std::vector<std::size_t>(rows, 0), true, present);
+  const Swept_section swept =
+    swept_section(ring, std::vector<std::size_t>(rows, 0), true, present, points.cell.empty() && closed_across_rows(grid));
   if(!swept.valid)
     return {};
   const std::vector<std::size_t> run_of_column = screw_column_runs(swept.section, swept.motion[0], columns, k);
@@ -506,6 +541,40 @@ inline std::vector<std::size_t> screw_column_sweep(const Quad_grid& grid, const 
   return label;
 }
 
+// `label`, one cluster per column of `grid` (fewer than k), with its
+// columns cut into pieces of consecutive quads until there are k clusters,
+// each new piece going to the column with the most quads per piece. On a
+// one-run sweep every quad of a column has one shape, so any piece is exact
+// where the column is. False, `label` unchanged, when the grid has fewer
+// than k quads.
+inline bool split_columns_to(std::vector<std::size_t>& label, const Quad_grid& grid, std::size_t k)
+{
+  const std::size_t columns = grid.columns;
+  std::vector<std::vector<std::size_t> > quads(columns);  // per column, in row order
+  for(std::size_t r = 0; r < grid.rows; ++r)
+    for(std::size_t c = 0; c < columns; ++c)
+      if(grid.face_at[r * columns + c] != no_index())
+        quads[c].push_back(grid.face_at[r * columns + c]);
+  std::vector<std::size_t> pieces(columns, 1);
+  for(std::size_t total = columns; total < k; ++total)
+  {
+    std::size_t best = no_index();
+    for(std::size_t c = 0; c < columns; ++c)
+      if(pieces[c] < quads[c].size() &&
+         (best == no_index() || quads[c].size() * pieces[best] > quads[best].size() * pieces[c]))
+        best = c;
+    if(best == no_index())
+      return false;
+    ++pieces[best];
+  }
+  std::size_t first = 0;
+  for(std::size_t c = 0; c < columns; first += pieces[c++])
+    for(std::size_t i = 0; i < quads[c].size(); ++i)
+      label[quads[c][i]] = first + i * pieces[c] / quads[c].size();
+  relabel_by_first_face(label);
+  return true;
+}
+
 // Sweep clusterings with k clusters: the rows cut into the k / columns runs
 // of least spread, every column of a run one mold, and the k mod columns
 // molds left split the columns of the longest run in two at its middle row.
@@ -513,7 +582,10 @@ inline std::vector<std::size_t> screw_column_sweep(const Quad_grid& grid, const 
 // segments of several groups above are not: it freezes the section's size
 // and shape, and keeps its bends and twists. With more columns than k, one
 // run of rows whose columns are cut into k screw column runs (see above).
-// One per grid direction; none when the grid is closed both ways or the
+// A trimmed grid sweeps as one run, and a grid closed across its rows as one
+// run that closes up (a rotation, close_up()): with more columns than k the
+// screw column runs, else every column cut into pieces of consecutive
+// quads (split_columns_to()). One per grid direction; none when the
 // leftover molds cannot be placed.
 template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
 std::vector<std::vector<std::size_t> >
@@ -528,18 +600,17 @@ sweep_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, s
     const Quad_grid grid = full_or_trimmed_grid(pm, fim, vpm, strips, row_direction, points);
     const std::size_t rows = grid.rows, columns = grid.columns;
     const bool trimmed = !points.cell.empty();
-    if(rows == 0 || (!trimmed && closed_across_rows(grid)))
+    if(rows == 0)
       continue;
-    if(columns > k)
+    // Runs of rows need every row whole (run_option()): a trimmed grid is
+    // one run, as a closed one is.
+    if(columns > k || trimmed || closed_across_rows(grid))
     {
-      std::vector<std::size_t> label = screw_column_sweep(grid, points, k);
-      if(!label.empty())
+      std::vector<std::size_t> label = screw_column_sweep(grid, points, (std::min)(k, columns));
+      if(!label.empty() && (columns >= k || split_columns_to(label, grid, k)))
         result.push_back(label);
       continue;
     }
-    // Runs of rows need every row whole (run_option()).
-    if(trimmed)
-      continue;
     const std::size_t runs = (std::min)(rows, k / columns), left = k - runs * columns;
     if(double(rows) * double(rows) * double(runs) > 1e8)
       continue;

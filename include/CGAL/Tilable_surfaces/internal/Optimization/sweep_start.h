@@ -33,7 +33,9 @@ namespace internal {
 // index) is exact, as described above; an empty matrix when the quads do
 // not form a grid, full or trimmed (trimmed_grid.h: only the points
 // present are fitted and placed), whose every cluster lies in one column
-// and one run of rows, or in one run of columns of a single run of rows. `points` are the
+// and one run of rows, or in one run of columns of a single run of rows
+// (the only run of a trimmed grid or one closed across its rows: its
+// clusters may then be pieces of columns). `points` are the
 // input positions by vertex index. `orientation`, if given, receives the
 // orientation of every face (by face index) at which the clusters' quads
 // correspond corner by corner there, in grid order: exact, where a best
@@ -62,9 +64,13 @@ Point_matrix sweep_start(const PolygonMesh& pm, FaceIndexMap fim, VertexIndexMap
       const std::size_t f = grid.face_at[r * columns + c];
       return f == no_index() ? no_index() : label[f];
     };
-    // Rows r and r + 1 share a motion when a cluster holds a quad of both.
+    // Rows r and r + 1 share a motion when a cluster holds a quad of both. A
+    // trimmed grid, or one closed across its rows, is swept as one run
+    // (sweep_clusterings()), whose columns may be cut into pieces.
+    const bool closed = points_of_grid.cell.empty() && closed_across_rows(grid);
+    const bool one_run = closed || !points_of_grid.cell.empty();
     std::vector<std::size_t> run_of(rows, 0);
-    for(std::size_t r = 1; r < rows; ++r)
+    for(std::size_t r = 1; r < rows && !one_run; ++r)
     {
       bool tied = false;
       for(std::size_t c = 0; c < columns && !tied; ++c)
@@ -121,14 +127,14 @@ Point_matrix sweep_start(const PolygonMesh& pm, FaceIndexMap fim, VertexIndexMap
       for(Eigen::Index j = 0; j < width; ++j)
         if(present[i](j) > 0)
           ring[i].col(j) = points.row(Eigen::Index(rings[i][std::size_t(j)])).transpose();
-    Swept_section swept = swept_section(ring, run_of, column_runs, present);
+    Swept_section swept = swept_section(ring, run_of, column_runs, present, closed);
     if(!swept.valid || (column_runs && !fit_screw_column_runs(swept.section, swept.motion[0], run_of_column)))
       continue;
     const Eigen::Matrix3Xd surface = swept.swept();
     // The swept points of the rings' points present, and the input's.
     Eigen::Matrix3Xd input(3, width * Eigen::Index(rows + 1)), swept_points(3, input.cols());
     std::vector<std::size_t> vertex_of;
-    for(std::size_t i = 0; i <= rows; ++i)
+    for(std::size_t i = 0; i + (closed ? 1 : 0) <= rows; ++i)
       for(Eigen::Index j = 0; j < width; ++j)
         if(present[i](j) > 0)
         {

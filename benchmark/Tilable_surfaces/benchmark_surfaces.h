@@ -9,6 +9,25 @@
 
 namespace benchmark_surfaces {
 
+// An n x n grid of quads between loops of n vertices, vertex j of loop i at
+// point(t, s) with s = 2 pi j / n and t = t_end * i / n: n + 1 loops, or n
+// when `welded` (the last row of quads joins loop n - 1 to loop 0).
+template <typename Mesh, typename PointAt>
+Mesh tube_grid(int n, double t_end, bool welded, PointAt point)
+{
+  Mesh m;
+  std::vector<typename Mesh::Vertex_index> v;
+  const int loops = welded ? n : n + 1;
+  for(int i = 0; i < loops; ++i)
+    for(int j = 0; j < n; ++j)
+      v.push_back(m.add_vertex(point(t_end * i / n, 2 * M_PI * j / n)));
+  auto id = [&](int i, int j) { return v[std::size_t((i % loops) * n + (j % n))]; };
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < n; ++j)
+      m.add_face(id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+  return m;
+}
+
 // The SEASHELL parametrization of the test data on an n x n grid (n^2 quads):
 // the planispiral tube P(t, s) = (R + r cos s)(cos t, sin t, 0) + r sin s (0, 0, 1),
 // R = e^{0.25 t}, r = 0.55 e^{0.25 t}, t in [0, 1.5 pi], closed around s.
@@ -16,21 +35,10 @@ template <typename Mesh>
 Mesh seashell(int n)
 {
   typedef typename Mesh::Point Point;
-  Mesh m;
-  std::vector<typename Mesh::Vertex_index> v;
-  for(int i = 0; i <= n; ++i)
-    for(int j = 0; j < n; ++j)
-    {
-      const double t = 1.5 * M_PI * i / n, s = 2 * M_PI * j / n;
-      const double big_r = std::exp(0.25 * t), r = 0.55 * big_r;
-      v.push_back(m.add_vertex(Point((big_r + r * std::cos(s)) * std::cos(t),
-                                     (big_r + r * std::cos(s)) * std::sin(t), r * std::sin(s))));
-    }
-  auto id = [&](int i, int j) { return v[std::size_t(i * n + (j % n))]; };
-  for(int i = 0; i < n; ++i)
-    for(int j = 0; j < n; ++j)
-      m.add_face(id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
-  return m;
+  return tube_grid<Mesh>(n, 1.5 * M_PI, false, [](double t, double s) {
+    const double big_r = std::exp(0.25 * t), r = 0.55 * big_r;
+    return Point((big_r + r * std::cos(s)) * std::cos(t), (big_r + r * std::cos(s)) * std::sin(t), r * std::sin(s));
+  });
 }
 
 // A saddle roof z = 0.35 (x^2 - y^2) + 0.08 sin(2.5 x + 1.3 y) on an n x n grid
@@ -71,20 +79,10 @@ template <typename Mesh>
 Mesh oval_torus(int n)
 {
   typedef typename Mesh::Point Point;
-  Mesh m;
-  std::vector<typename Mesh::Vertex_index> v;
-  for(int i = 0; i < n; ++i)
-    for(int j = 0; j < n; ++j)
-    {
-      const double t = 2 * M_PI * i / n, s = 2 * M_PI * j / n;
-      const double out = 3 + 0.5 * std::cos(2 * t) + std::cos(s);
-      v.push_back(m.add_vertex(Point(out * std::cos(t), out * std::sin(t), std::sin(s))));
-    }
-  auto id = [&](int i, int j) { return v[std::size_t((i % n) * n + (j % n))]; };
-  for(int i = 0; i < n; ++i)
-    for(int j = 0; j < n; ++j)
-      m.add_face(id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
-  return m;
+  return tube_grid<Mesh>(n, 2 * M_PI, true, [](double t, double s) {
+    const double out = 3 + 0.5 * std::cos(2 * t) + std::cos(s);
+    return Point(out * std::cos(t), out * std::sin(t), std::sin(s));
+  });
 }
 
 // The process's high-water mark of resident memory (VmHWM) in MB since the

@@ -50,9 +50,13 @@ namespace internal {
 // about its axis): a sweep then closes up only as a rotation whose rows-th
 // power is the identity (swept_section()). The first quad of the last row
 // shares its corners with the first quad of the first row, beyond the edge
-// that two rows share anyway when there are only two.
-inline bool closed_across_rows(const Quad_grid& grid)
+// that two rows share anyway when there are only two. `points`: those of a
+// trimmed grid, else empty; a trimmed grid never closes (its strips do not,
+// trimmed_quad_grid()) and may miss those two quads.
+inline bool closed_across_rows(const Quad_grid& grid, const Trimmed_grid_points& points)
 {
+  if(!points.cell.empty())
+    return false;
   const Panel& first = grid.corners[grid.face_at[0]];
   const Panel& last = grid.corners[grid.face_at[(grid.rows - 1) * grid.columns]];
   int shared = 0;
@@ -255,7 +259,9 @@ inline Swept_section swept_section(const std::vector<Eigen::Matrix3Xd>& ring, co
     s.frame[i - 1] = s.motion[run_of[i - 1]].inverse() * s.frame[i];
   s.section = Eigen::Matrix3Xd::Zero(3, width);
   Eigen::ArrayXd count = Eigen::ArrayXd::Zero(width);
-  for(std::size_t i = 0; i + (closed ? 1 : 0) <= rows; ++i)
+  // A closed grid's last ring is its first.
+  const std::size_t distinct_rings = closed ? rows : rows + 1;
+  for(std::size_t i = 0; i < distinct_rings; ++i)
   {
     const Eigen::Matrix3Xd pulled = apply_motion(s.frame[i].inverse(), ring[i]);
     for(Eigen::Index j = 0; j < width; ++j)
@@ -526,7 +532,7 @@ inline std::vector<std::size_t> screw_column_sweep(const Quad_grid& grid, const 
     for(std::size_t j = 0; j < rings[i].size(); ++j)
       ring[i].col(Eigen::Index(j)) = rings[i][j];
   const Swept_section swept =
-    swept_section(ring, std::vector<std::size_t>(rows, 0), true, present, points.cell.empty() && closed_across_rows(grid));
+    swept_section(ring, std::vector<std::size_t>(rows, 0), true, present, closed_across_rows(grid, points));
   if(!swept.valid)
     return {};
   const std::vector<std::size_t> run_of_column = screw_column_runs(swept.section, swept.motion[0], columns, k);
@@ -604,7 +610,7 @@ sweep_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, s
       continue;
     // Runs of rows need every row whole (run_option()): a trimmed grid is
     // one run, as a closed one is.
-    if(columns > k || trimmed || closed_across_rows(grid))
+    if(columns > k || trimmed || closed_across_rows(grid, points))
     {
       std::vector<std::size_t> label = screw_column_sweep(grid, points, (std::min)(k, columns));
       if(!label.empty() && (columns >= k || split_columns_to(label, grid, k)))

@@ -67,7 +67,7 @@ Point_matrix sweep_start(const PolygonMesh& pm, FaceIndexMap fim, VertexIndexMap
     // Rows r and r + 1 share a motion when a cluster holds a quad of both. A
     // trimmed grid, or one closed across its rows, is swept as one run
     // (sweep_clusterings()), whose columns may be cut into pieces.
-    const bool closed = points_of_grid.cell.empty() && closed_across_rows(grid);
+    const bool closed = closed_across_rows(grid, points_of_grid);
     const bool one_run = closed || !points_of_grid.cell.empty();
     std::vector<std::size_t> run_of(rows, 0);
     for(std::size_t r = 1; r < rows && !one_run; ++r)
@@ -134,7 +134,8 @@ Point_matrix sweep_start(const PolygonMesh& pm, FaceIndexMap fim, VertexIndexMap
     // The swept points of the rings' points present, and the input's.
     Eigen::Matrix3Xd input(3, width * Eigen::Index(rows + 1)), swept_points(3, input.cols());
     std::vector<std::size_t> vertex_of;
-    for(std::size_t i = 0; i + (closed ? 1 : 0) <= rows; ++i)
+    const std::size_t distinct_rings = closed ? rows : rows + 1;  // a closed grid's last ring is its first
+    for(std::size_t i = 0; i < distinct_rings; ++i)
       for(Eigen::Index j = 0; j < width; ++j)
         if(present[i](j) > 0)
         {

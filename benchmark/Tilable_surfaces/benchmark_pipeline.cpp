@@ -8,7 +8,8 @@
 // phase (validation, clustering, the displacement prediction that ranks the
 // candidate clusterings, their optimization, the improvement rounds, with
 // the sweep clusterings solved first from their exact start), the total,
-// the peak memory, the congruence error, the number of distinct S-quads, the
+// the peak memory, the congruence error, the number of distinct molds (S-quads
+// congruent to one another count once, `number_of_distinct_molds`), the
 // symmetric Hausdorff distance to the input and the pairs of faces of the
 // result that cross each other; then the exponent a of a least-squares fit
 // time ~ quads^a over the sizes that finished, and again over those above
@@ -126,7 +127,7 @@ bool run(const std::string& name, Mesh& mesh, std::size_t k, double budget, doub
   char cells[160];
   std::snprintf(cells, sizeof cells, "%.1f%s | %.0f | %.1e | %zu | %.2f | %zu", r.total_time,
                 record.stopped ? " (stopped)" : "", benchmark_surfaces::peak_memory_mb(),
-                m.congruence_error, m.number_of_clusters, 100 * m.hausdorff_distance,
+                m.congruence_error, m.number_of_distinct_molds, 100 * m.hausdorff_distance,
                 m.self_intersecting_face_pairs);
   std::cout << "| " << name << " | " << mesh.number_of_faces() << " | " << k << " | "
             << seconds(record, "validation") << " | " << seconds(record, "clustering") << " | "
@@ -168,7 +169,7 @@ int main(int argc, char** argv)
     std::cout << "(the peak memory cannot be reset here: each row's is the largest so far)\n";
   std::cout << "| surface | quads | K | validation (s) | clustering (s) | sweeps (s) | prediction (s)"
                " | candidate optimization (s) | improvement (s) | total (s) | peak memory (MB)"
-               " | congruence | distinct S-quads | Hausdorff (% diag) | crossing face pairs | chosen |\n"
+               " | congruence | distinct molds | Hausdorff (% diag) | crossing face pairs | chosen |\n"
             << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
   for(const std::string& file : files)
   {

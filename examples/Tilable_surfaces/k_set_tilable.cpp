@@ -516,6 +516,10 @@ int run(const Options& o)
                                              : "WARNING: no K up to the largest tried meets the budget; result at K = ")
               << m.number_of_clusters << "\n";
   }
+  if(m.number_of_distinct_molds < m.number_of_clusters)
+    std::cerr << "[k_set_tilable] " << m.number_of_distinct_molds << " distinct molds: "
+              << m.number_of_clusters - m.number_of_distinct_molds
+              << " of the K S-quads came out congruent to another one (within 1e-6 of the mean edge length)\n";
   const std::size_t triangle_tiles = std::size_t(std::count_if(
     m.s_quads.begin(), m.s_quads.end(), [](const TS::Panel& s) { return s.is_triangle(); }));
   if(triangle_tiles > 0)

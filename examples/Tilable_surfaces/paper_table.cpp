@@ -5,7 +5,8 @@
 // and one markdown row sets them side by side: K, degree of flexibility, the
 // measured congruence error and the symmetric Hausdorff distance to the input
 // (max / mean, of the bounding-box diagonal) of each, the ratio of the two
-// Hausdorff distances (default / paper), and the times. `--terms` prints the
+// Hausdorff distances (default / paper), the times, and the distinct molds of
+// the default solver's result (congruent S-quads count once). `--terms` prints the
 // paper's normalized terms F̃_d..F̃_o of each run instead.
 //
 // Usage: paper_table [--solver gauss-newton|paper-cg|both] [--terms] [SURFACE ...]
@@ -52,8 +53,8 @@ void print_header(bool terms, bool both)
     std::printf("| surface | K | DOF | solver | F̃_d | F̃_f | F̃_e | F̃_a | F̃_o | Hausdorff max / mean | congruence | tilable | iterations | time (s) |\n"
                 "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|\n");
   else if(both)
-    std::printf("| surface | K | DOF | congruence (default) | Hausdorff max / mean (default) | congruence (paper CG) | Hausdorff max / mean (paper CG) | Hausdorff ratio default / paper | time default / paper (s) |\n"
-                "|---|---|---|---|---|---|---|---|---|\n");
+    std::printf("| surface | K | DOF | congruence (default) | Hausdorff max / mean (default) | congruence (paper CG) | Hausdorff max / mean (paper CG) | Hausdorff ratio default / paper | time default / paper (s) | molds (default) |\n"
+                "|---|---|---|---|---|---|---|---|---|---|\n");
   else
     std::printf("| surface | K | DOF | solver | congruence | Hausdorff max / mean | displacement max | iterations | time (s) |\n"
                 "|---|---|---|---|---|---|---|---|---|\n");
@@ -93,12 +94,12 @@ void print_rows(const std::string& surface, int k, const std::vector<Run>& runs,
   {
     const TS::Tilability_measure& a = runs[0].result.optimization.measure;
     const TS::Tilability_measure& b = runs[1].result.optimization.measure;
-    std::printf("| %s | %d | %zu | %s | %.2e / %.2e | %s | %.2e / %.2e | %.2f | %.2f / %.2f |\n",
+    std::printf("| %s | %d | %zu | %s | %.2e / %.2e | %s | %.2e / %.2e | %.2f | %.2f / %.2f | %zu |\n",
                 surface.c_str(), k, a.degree_of_flexibility, congruence(runs[0].result).c_str(),
                 a.hausdorff_distance, a.mean_symmetric_distance, congruence(runs[1].result).c_str(),
                 b.hausdorff_distance, b.mean_symmetric_distance,
                 b.hausdorff_distance > 0 ? a.hausdorff_distance / b.hausdorff_distance : 0.0,
-                runs[0].result.total_time, runs[1].result.total_time);
+                runs[0].result.total_time, runs[1].result.total_time, a.number_of_distinct_molds);
   }
   std::fflush(stdout);
 }

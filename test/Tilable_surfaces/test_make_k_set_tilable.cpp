@@ -2,6 +2,7 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
+#include <CGAL/subdivision_method_3.h>
 
 #include <CGAL/Tilable_surfaces/make_k_set_tilable.h>
 
@@ -513,6 +514,45 @@ TEST(MakeKSetTilable, AboveFiveThousandFacesAnExactSweepIsTheResult)
     EXPECT_LE(r.clustering.cluster_sizes.size(), k);
     EXPECT_LE(congruence_by_umeyama(mesh, cluster, orientation), 1e-6) << "K = " << k;
     EXPECT_FALSE(has_phase(visitor, "candidate optimization")) << "K = " << k;
+  }
+}
+
+namespace {
+
+// Records the phases and stops every solve at its start.
+struct Recording_stopper : Recording_visitor
+{
+  bool iteration(int, double, double) { return false; }
+};
+
+} // namespace
+
+// Above 5,000 faces no displacement prediction is made (each factorizes the
+// solver's whole matrix: 8 GB at 187k quads): the candidates are ranked by
+// their length spread alone. cross_quad (valences 3 and 5, so no sweep)
+// subdivided 3 times (2,432 quads) predicts every candidate; 4 times
+// (9,728 quads) none, and its first solve is still made.
+TEST(MakeKSetTilable, AboveFiveThousandFacesNoPredictionIsMade)
+{
+  for(int levels : {3, 4})
+  {
+    Mesh mesh = read("cross_quad.off");
+    CGAL::Subdivision_method_3::CatmullClark_subdivision(mesh, CGAL::parameters::number_of_iterations(levels));
+    const bool large = num_faces(mesh) > 5000;
+    Recording_stopper visitor;
+    const TS::K_set_tilable_result r =
+      TS::make_k_set_tilable(mesh, TSP::number_of_tiles(num_faces(mesh) / 25).visitor(std::ref(visitor)));
+    EXPECT_EQ(has_phase(visitor, "displacement prediction"), !large) << num_faces(mesh) << " quads";
+    EXPECT_TRUE(has_phase(visitor, "candidate optimization")) << num_faces(mesh) << " quads";
+    std::size_t predicted = 0, ranked = 0;
+    for(const TS::Clustering_candidate& c : r.clustering.candidates)
+    {
+      EXPECT_NE(c.origin, TS::Clustering_candidate::GRID_SWEEPS);
+      ++ranked;
+      predicted += c.predicted_displacement > 0 ? 1 : 0;
+    }
+    ASSERT_GT(ranked, 1u);
+    EXPECT_EQ(predicted, large ? 0u : ranked) << num_faces(mesh) << " quads";
   }
 }
 

@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 
 using namespace test_helpers;
@@ -165,4 +166,60 @@ TEST(Measure, MismatchedMeshesThrow)
   Mesh b = unit_square();
   const Clustering c = every_face_alone(a);
   EXPECT_THROW(TS::measure_tilability(a, b, clustering_parameters(c)), TS::Invalid_input);
+}
+
+namespace {
+
+// Two separate quads: `q` and `r`, each its own cluster.
+Mesh two_quads(const std::array<Point, 4>& q, const std::array<Point, 4>& r)
+{
+  Mesh m;
+  for(const auto* corners : {&q, &r})
+    m.add_face(m.add_vertex((*corners)[0]), m.add_vertex((*corners)[1]), m.add_vertex((*corners)[2]),
+               m.add_vertex((*corners)[3]));
+  return m;
+}
+
+} // namespace
+
+// Clusters whose S-quads are congruent need one mold between them. By hand:
+// two unit squares, each its own cluster, are one mold; a unit square and a
+// 1 x 2 rectangle two. A generic non-planar quad and its mirror image (x ->
+// 6 - x, same labelling) are two molds under proper motions, one when
+// mirrored panels are allowed. A corner moved by 1e-4 of the edge length
+// makes a second mold, by 1e-9 not (the tolerance is 1e-6).
+TEST(Measure, CongruentSQuadsAreOneMold)
+{
+  auto molds = [](Mesh mesh, TS::Orientation_policy policy) {
+    const Clustering c = every_face_alone(mesh);
+    const TS::Tilability_measure m =
+      TS::measure_tilability(mesh, mesh, clustering_parameters(c).orientation_policy(policy));
+    EXPECT_EQ(m.number_of_clusters, 2u);
+    // The first cluster makes mold 0; the second shares it or makes mold 1.
+    EXPECT_EQ(m.cluster_molds, (std::vector<std::size_t>{0, m.number_of_distinct_molds - 1}));
+    const std::vector<TS::Tile> catalog = TS::tile_catalog(m);
+    EXPECT_EQ(catalog[1].mold, m.cluster_molds[1]);
+    return m.number_of_distinct_molds;
+  };
+  const TS::Orientation_policy proper = TS::PROPER_RIGID_MOTIONS;
+  EXPECT_EQ(molds(two_squares(), proper), 1u);
+  Mesh rectangle = two_squares();
+  for(auto v : vertices(rectangle))
+    if(rectangle.point(v).x() == 2)
+      rectangle.point(v) = Point(3, rectangle.point(v).y(), 0);
+  EXPECT_EQ(molds(rectangle, proper), 2u);
+
+  const std::array<Point, 4> q = {Point(0, 0, 0), Point(1.2, 0, 0), Point(1, 1, 0.3), Point(0, 0.8, 0.1)};
+  std::array<Point, 4> mirror;
+  for(int i = 0; i < 4; ++i) mirror[i] = Point(6 - q[i].x(), q[i].y(), q[i].z());
+  EXPECT_EQ(molds(two_quads(q, mirror), proper), 2u);
+  EXPECT_EQ(molds(two_quads(q, mirror), TS::ALLOW_MIRRORED_PANELS), 1u);
+
+  for(double shift : {1e-4, 1e-9})
+  {
+    std::array<Point, 4> moved = q;
+    for(Point& p : moved) p = Point(p.x() + 5, p.y() - 2, p.z() + 1); // a translate of q
+    moved[2] = Point(moved[2].x() + shift, moved[2].y(), moved[2].z());
+    EXPECT_EQ(molds(two_quads(q, moved), proper), shift > 1e-6 ? 2u : 1u) << "corner moved by " << shift;
+  }
 }

@@ -25,6 +25,7 @@ TS::Tile lifted_square(double h)
   t.corners = TS::Panel{{Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(1, 1, 0), Vector3d(0, 1, h)}};
   t.worst_deviation = 2.5e-7;
   t.mirrored_count = 5;
+  t.mold = 2;
   return t;
 }
 
@@ -42,7 +43,7 @@ TEST(TileCatalog, CsvHasTheHandComputedValues)
   std::getline(in, row);
   std::getline(in, flat);
   const std::vector<std::string> names = csv_cells(header), cells = csv_cells(row);
-  ASSERT_EQ(names.size(), 26u);
+  ASSERT_EQ(names.size(), 27u);
   ASSERT_EQ(cells.size(), names.size());
   auto value = [&](const std::string& name) {
     for(std::size_t i = 0; i < names.size(); ++i)
@@ -65,9 +66,10 @@ TEST(TileCatalog, CsvHasTheHandComputedValues)
   EXPECT_EQ(value("worst_deviation"), 2.5e-7);
   // The diagonals (0,0,0)-(1,1,0) and (1,0,0)-(0,1,h) are h / sqrt(2 h^2 + 4) apart.
   EXPECT_EQ(value("planar"), 0) << "diagonals 0.24 apart";
-  EXPECT_EQ(std::stod(csv_cells(flat)[names.size() - 4]), 0.0) << "a flat tile has planarity 0";
-  EXPECT_EQ(csv_cells(flat)[names.size() - 3], "1") << "and is planar";
-  EXPECT_EQ(cells.back(), "quad");
+  EXPECT_EQ(std::stod(csv_cells(flat)[names.size() - 5]), 0.0) << "a flat tile has planarity 0";
+  EXPECT_EQ(csv_cells(flat)[names.size() - 4], "1") << "and is planar";
+  EXPECT_EQ(cells[names.size() - 2], "quad");
+  EXPECT_EQ(value("mold"), 2);
 }
 
 TEST(TileCatalog, AnSTriangleRowHasItsThreeEdgesAndLeavesTheQuadColumnsEmpty)
@@ -101,6 +103,7 @@ TEST(TileCatalog, AnSTriangleRowHasItsThreeEdgesAndLeavesTheQuadColumnsEmpty)
 
   const nlohmann::json j = TS::IO::tile_catalog_json({t})[0];
   EXPECT_EQ(j["kind"], "triangle");
+  EXPECT_EQ(j["mold"], 0u);
   EXPECT_EQ(j["corners"].size(), 3u);
   EXPECT_EQ(j["edges"].size(), 3u);
   EXPECT_EQ(j["diagonals"].size(), 0u);

@@ -283,7 +283,9 @@ public:
   ///    Without an exact sweep, 0 counts as 1.
   /// -# The other candidates of the last `cluster()` are ranked two ways: by their
   ///    predicted displacement (`predict_displacement()`; with a parallel
-  ///    `ConcurrencyTag`, one candidate per thread, with the same values), and by the spread
+  ///    `ConcurrencyTag`, one candidate per thread, with the same values;
+  ///    none above 5,000 faces, where each would factorize the solver's whole
+  ///    matrix: the spread alone ranks there), and by the spread
   ///    of the input's edge lengths that their edge-sharing graph ties
   ///    together (`Clustering_candidate::length_deviation`). Shape
   ///    similarity and DOF do not say how far a clustering moves the surface;
@@ -311,7 +313,8 @@ public:
   ///    corners) is split in two, and of the pairs of clusters whose merge
   ///    spreads the input's edge lengths least
   ///    (`Edge_sharing_graph::length_deviation_after_merge()`), the one with
-  ///    the smallest predicted displacement is merged; orientations are
+  ///    the smallest predicted displacement is merged (above 5,000 faces the
+  ///    one of least spread, unpredicted); orientations are
   ///    re-tagged and the result optimized again from the input. A round
   ///    that does not improve the result is not repeated: the next one splits
   ///    the next cluster in that order.
@@ -378,8 +381,13 @@ public:
     if(!stopped && !sweep_suffices)
     {
       timer.reset();
-      ranked = ranked_candidates(np, (std::max)(std::size_t(1), optimized));
-      visitor.phase("displacement prediction", timer.time());
+      // Above large_mesh_faces a prediction factorizes the solver's whole
+      // matrix, one per candidate and thread (spot_quadrangulated subdivided
+      // to 187k quads: 8 GB and 2 minutes each): there the spread ranks alone.
+      const bool predict = num_faces(m_mesh) <= large_mesh_faces;
+      ranked = ranked_candidates(np, (std::max)(std::size_t(1), optimized), predict);
+      if(predict)
+        visitor.phase("displacement prediction", timer.time());
     }
     State best;
     Solved_ahead ahead;
@@ -801,16 +809,18 @@ private:
     if(pairs.empty())
       return false;
     std::sort(pairs.begin(), pairs.end());
-    pairs.resize((std::min)(pairs.size(), std::size_t(4)));
-    // Each pair merged in a copy and predicted, in parallel (predict_candidates()).
+    // Each pair merged in a copy and predicted, in parallel (predict_candidates());
+    // above large_mesh_faces, the least spread alone (see optimize_closest()).
+    pairs.resize((std::min)(pairs.size(), std::size_t(num_faces(m_mesh) <= large_mesh_faces ? 4 : 1)));
     std::vector<double> prediction(pairs.size());
-    with_concurrency([&] {
-      internal::parallel_for(pairs.size(), [&](std::size_t i) {
-        internal::Face_clustering merged = m_clustering_model;
-        internal::merge_clusters(merged, m_faces.quads, pairs[i].second.first, pairs[i].second.second, m_policy);
-        prediction[i] = predicted_displacement(merged, np);
+    if(pairs.size() > 1)
+      with_concurrency([&] {
+        internal::parallel_for(pairs.size(), [&](std::size_t i) {
+          internal::Face_clustering merged = m_clustering_model;
+          internal::merge_clusters(merged, m_faces.quads, pairs[i].second.first, pairs[i].second.second, m_policy);
+          prediction[i] = predicted_displacement(merged, np);
+        });
       });
-    });
     const std::size_t best = std::size_t(std::min_element(prediction.begin(), prediction.end()) - prediction.begin());
     merge_clusters(pairs[best].second.first, pairs[best].second.second);
     retag_orientations();
@@ -823,9 +833,10 @@ private:
   // quarter as many segment clusterings, in the order they were made, since
   // both rankings underrate their long-range ties.
   template <typename NP>
-  std::vector<std::size_t> ranked_candidates(const NP& np, std::size_t optimized)
+  std::vector<std::size_t> ranked_candidates(const NP& np, std::size_t optimized, bool predict)
   {
-    predict_candidates(np);
+    if(predict)
+      predict_candidates(np);
     std::vector<std::pair<double, std::size_t> > by_prediction, by_spread;
     for(std::size_t i = 0; i < m_clustering.candidates.size(); ++i)
     {
@@ -839,7 +850,7 @@ private:
     std::sort(by_spread.begin(), by_spread.end());
     std::vector<std::size_t> ranked;
     for(std::size_t r = 0; r < by_prediction.size(); ++r)
-      for(std::size_t i : {by_prediction[r].second, by_spread[r].second})
+      for(std::size_t i : {predict ? by_prediction[r].second : by_spread[r].second, by_spread[r].second})
         if(std::find(ranked.begin(), ranked.end(), i) == ranked.end())
           ranked.push_back(i);
     ranked.resize((std::min)(optimized, ranked.size()));

@@ -10,6 +10,7 @@
 /// normalized energy terms (its Table 1), and the S-quad templates.
 /// None of it reads a solver's own energy or bookkeeping.
 
+#include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/internal/Measure/approximation.h>
 #include <CGAL/Tilable_surfaces/internal/Measure/congruence.h>
 #include <CGAL/Tilable_surfaces/internal/Measure/self_intersections.h>
@@ -58,6 +59,18 @@ struct Tilability_measure
   /// in mesh units and in a canonical frame: t0 at the origin, t1 on the +x
   /// axis, t2 in the xy plane with y >= 0. Zeros for a cluster without faces.
   std::vector<Panel> s_quads;
+  /// The number of molds the result needs: its S-quads (those of clusters
+  /// with faces) counted once per group of congruent ones, each corner within
+  /// `defaults::congruence_tolerance` times `mean_edge_length` after the best
+  /// rigid fit under a correspondence the orientation policy admits (a mirror
+  /// fit too with `allows_mirrored_panels`). At most `number_of_clusters`:
+  /// the solver may make two clusters' S-quads congruent (De Beers stand-in,
+  /// K = 16: 11 molds), and a fabricator cuts one mold for both.
+  std::size_t number_of_distinct_molds = 0;
+  /// Per cluster: its mold, 0..`number_of_distinct_molds` - 1 numbered in
+  /// cluster order (congruent S-quads share one); `number_of_clusters` for a
+  /// cluster without faces.
+  std::vector<std::size_t> cluster_molds;
   /// The largest distance between the two diagonals of a face of the result,
   /// divided by `mean_edge_length`: 0 when every panel is planar.
   double planarity_error = 0;
@@ -140,6 +153,9 @@ struct Tile
   /// best rigid fit (proper, or improper for a mirrored instance), in the
   /// mesh's units.
   double worst_deviation = 0;
+  /// Its mold (`Tilability_measure::cluster_molds`): tiles whose S-quads are
+  /// congruent share one, and a fabricator cuts it once.
+  std::size_t mold = 0;
 };
 
 /// \ingroup PkgTilableSurfacesRef
@@ -156,6 +172,7 @@ inline std::vector<Tile> tile_catalog(const Tilability_measure& m)
     tiles[c].mirrored_count = m.cluster_mirrored_counts[c];
     tiles[c].corners = m.s_quads[c];
     tiles[c].worst_deviation = m.cluster_congruence_errors[c] * m.mean_edge_length;
+    tiles[c].mold = c < m.cluster_molds.size() ? m.cluster_molds[c] : c;
   }
   return tiles;
 }
@@ -184,6 +201,11 @@ inline Tilability_measure measure_tilability(const Tilable_problem& problem,
     m.congruence_error = (std::max)(m.congruence_error, m.cluster_congruence_errors.back());
   }
 
+  m.cluster_molds = cluster_molds(m.s_quads, m.cluster_sizes, problem.allow_mirror,
+                                  defaults::congruence_tolerance * m.mean_edge_length);
+  for(std::size_t mold : m.cluster_molds)
+    if(mold < m.cluster_molds.size())
+      m.number_of_distinct_molds = (std::max)(m.number_of_distinct_molds, mold + 1);
   m.planarity_error = worst_diagonal_distance(problem, result) / m.mean_edge_length;
 
   const Eigen::RowVector3d extent = input.colwise().maxCoeff() - input.colwise().minCoeff();

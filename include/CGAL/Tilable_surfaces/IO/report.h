@@ -76,6 +76,7 @@ inline nlohmann::json tilability_report_json(const K_set_tilable_result& r,
   }
   return {
     {"K", m.number_of_clusters},
+    {"distinct_molds", m.number_of_distinct_molds},
     {"degree_of_flexibility", m.degree_of_flexibility},
     {"cluster_sizes", m.cluster_sizes},
     {"tile_kinds", kinds},

@@ -69,7 +69,8 @@ inline void check_tiles(const std::vector<Tile>& tiles)
 /// the diagonals `d02, d13`, `signed_volume`, `planarity` (distance of t3 to
 /// the plane of t0, t1, t2), `planar` (1 if the diagonals are within 1e-6 of
 /// the tile's mean edge length of each other, a flat mold) and
-/// `worst_deviation`, then `kind` (`quad` or `triangle`). An S-triangle's
+/// `worst_deviation`, then `kind` (`quad` or `triangle`) and `mold` (tiles
+/// whose S-quads are congruent share one, `Tile::mold`). An S-triangle's
 /// row leaves `t3x, t3y, t3z`, `e30`, `d02` and `d13` empty, and its `e23`
 /// is the edge t2t0. Full double precision.
 /// \throws Invalid_input if a tile has a non-finite number; nothing is
@@ -78,7 +79,7 @@ inline bool write_tile_catalog_CSV(std::ostream& os, const std::vector<Tile>& ti
 {
   internal::check_tiles(tiles);
   os << "id,instances,mirrored,t0x,t0y,t0z,t1x,t1y,t1z,t2x,t2y,t2z,t3x,t3y,t3z,"
-        "e01,e12,e23,e30,d02,d13,signed_volume,planarity,planar,worst_deviation,kind\n";
+        "e01,e12,e23,e30,d02,d13,signed_volume,planarity,planar,worst_deviation,kind,mold\n";
   os << std::setprecision(std::numeric_limits<double>::max_digits10);
   for(const Tile& t : tiles)
   {
@@ -99,7 +100,7 @@ inline bool write_tile_catalog_CSV(std::ostream& os, const std::vector<Tile>& ti
       if(!triangle) os << d;
     }
     os << ',' << r.signed_volume << ',' << r.planarity << ',' << (r.is_planar ? 1 : 0) << ','
-       << t.worst_deviation << ',' << (triangle ? "triangle" : "quad") << '\n';
+       << t.worst_deviation << ',' << (triangle ? "triangle" : "quad") << ',' << t.mold << '\n';
   }
   return bool(os);
 }
@@ -123,6 +124,7 @@ inline nlohmann::json tile_catalog_json(const std::vector<Tile>& tiles)
     catalog.push_back({{"id", t.id},
                        {"instances", t.instance_count},
                        {"mirrored", t.mirrored_count},
+                       {"mold", t.mold},
                        {"kind", t.corners.is_triangle() ? "triangle" : "quad"},
                        {"corners", corners},
                        {"edges", std::vector<double>(r.edges.begin(), r.edges.begin() + t.corners.size())},

@@ -828,8 +828,9 @@ private:
   }
 
   // The candidates of the last cluster() that optimize_closest() optimizes:
-  // ranked two ways, taken in turn, by predicted displacement and by the
-  // spread of edge lengths they tie together, the `optimized` first; then a
+  // ranked two ways, taken in turn, by predicted displacement (unless not
+  // `predict`: then by spread alone) and by the spread of edge lengths they
+  // tie together, the `optimized` first; then a
   // quarter as many segment clusterings, in the order they were made, since
   // both rankings underrate their long-range ties.
   template <typename NP>

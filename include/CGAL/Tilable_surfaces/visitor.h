@@ -45,7 +45,8 @@ struct Default_visitor
   /// "orientations";
   /// `K_set_tilable_surface::optimize_closest()`: "sweep candidate",
   /// "displacement prediction", "candidate optimization", "improvement round"
-  /// (the last three only when the search goes beyond the sweeps);
+  /// (the last three only when the search goes beyond the sweeps, the first
+  /// of them only up to 5,000 faces);
   /// `make_k_set_tilable()` and `k_set_tilable_curve()`: "validation",
   /// "clustering", "optimization".
   void phase(const char* /*name*/, double /*seconds*/) {}

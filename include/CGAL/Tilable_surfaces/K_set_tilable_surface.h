@@ -381,10 +381,7 @@ public:
     if(!stopped && !sweep_suffices)
     {
       timer.reset();
-      // Above large_mesh_faces a prediction factorizes the solver's whole
-      // matrix, one per candidate and thread (spot_quadrangulated subdivided
-      // to 187k quads: 8 GB and 2 minutes each): there the spread ranks alone.
-      const bool predict = num_faces(m_mesh) <= large_mesh_faces;
+      const bool predict = predicts_displacements();
       ranked = ranked_candidates(np, (std::max)(std::size_t(1), optimized), predict);
       if(predict)
         visitor.phase("displacement prediction", timer.time());
@@ -810,8 +807,8 @@ private:
       return false;
     std::sort(pairs.begin(), pairs.end());
     // Each pair merged in a copy and predicted, in parallel (predict_candidates());
-    // above large_mesh_faces, the least spread alone (see optimize_closest()).
-    pairs.resize((std::min)(pairs.size(), std::size_t(num_faces(m_mesh) <= large_mesh_faces ? 4 : 1)));
+    // the least spread alone when no displacement is predicted.
+    pairs.resize((std::min)(pairs.size(), std::size_t(predicts_displacements() ? 4 : 1)));
     std::vector<double> prediction(pairs.size());
     if(pairs.size() > 1)
       with_concurrency([&] {
@@ -826,6 +823,12 @@ private:
     retag_orientations();
     return true;
   }
+
+  // Whether optimize_closest() ranks by predicted displacement. Above
+  // large_mesh_faces a prediction factorizes the solver's whole matrix, one
+  // per candidate and thread (spot_quadrangulated subdivided to 187k quads:
+  // 8 GB and 2 minutes each): there the length spread ranks alone.
+  bool predicts_displacements() const { return num_faces(m_mesh) <= large_mesh_faces; }
 
   // The candidates of the last cluster() that optimize_closest() optimizes:
   // ranked two ways, taken in turn, by predicted displacement (unless not

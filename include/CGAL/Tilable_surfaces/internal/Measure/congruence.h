@@ -82,36 +82,29 @@ inline Cluster_congruence cluster_congruence(const Tilable_problem& problem, con
 // joins the first earlier mold whose S-quad fits it, every corner within
 // `tolerance` (absolute) after the best rigid fit under a correspondence the
 // policy admits, else it makes a new one; molds numbered from 0 in cluster
-// order, `s_quads.size()` for a cluster without faces. Two congruent shapes'
-// sorted corner distances differ by at most 2 `tolerance`, which spares most
-// fits.
+// order, `s_quads.size()` for a cluster without faces. The sorted edge and
+// diagonal lengths of two such shapes (their shape_descriptor() but the
+// volume term, whose cube root is not Lipschitz) differ by at most
+// 2 `tolerance`, which spares most fits.
 inline std::vector<std::size_t> cluster_molds(const std::vector<Panel>& s_quads, const std::vector<std::size_t>& sizes,
                                               bool allow_mirror, double tolerance)
 {
-  auto sorted_distances = [](const Panel& q) {
-    std::vector<double> d;
-    for(int i = 0; i < q.size(); ++i)
-      for(int j = i + 1; j < q.size(); ++j) d.push_back((q[i] - q[j]).norm());
-    std::sort(d.begin(), d.end());
-    return d;
-  };
   const Orientation_policy policy = allow_mirror ? ALLOW_MIRRORED_PANELS : PROPER_RIGID_MOTIONS;
   std::vector<std::size_t> mold(s_quads.size(), s_quads.size());
   std::vector<std::size_t> first_cluster; // per mold, the cluster whose S-quad stands for it
-  std::vector<std::vector<double> > mold_distances;
+  std::vector<Quad_descriptor> mold_descriptors;
   for(std::size_t c = 0; c < s_quads.size(); ++c)
   {
     if(sizes[c] == 0)
       continue;
-    const std::vector<double> d = sorted_distances(s_quads[c]);
+    const Quad_descriptor d = shape_descriptor(s_quads[c]);
     for(std::size_t m = 0; m < first_cluster.size() && mold[c] == s_quads.size(); ++m)
     {
-      const std::vector<double>& e = mold_distances[m];
-      bool close = e.size() == d.size();
-      for(std::size_t i = 0; i < d.size() && close; ++i) close = std::abs(d[i] - e[i]) <= 2 * tolerance;
+      const Panel& s = s_quads[first_cluster[m]];
+      bool close = s.size() == s_quads[c].size();
+      for(std::size_t i = 0; i < 6 && close; ++i) close = std::abs(d[i] - mold_descriptors[m][i]) <= 2 * tolerance;
       if(!close)
         continue;
-      const Panel& s = s_quads[first_cluster[m]];
       const Panel target = reoriented(s_quads[c], best_match(s, s_quads[c], policy).orientation);
       if(rigid_fit_deviation(s, target, allow_mirror) <= tolerance)
         mold[c] = m;
@@ -120,7 +113,7 @@ inline std::vector<std::size_t> cluster_molds(const std::vector<Panel>& s_quads,
     {
       mold[c] = first_cluster.size();
       first_cluster.push_back(c);
-      mold_distances.push_back(d);
+      mold_descriptors.push_back(d);
     }
   }
   return mold;

@@ -1,10 +1,11 @@
 // The whole pipeline of make_k_set_tilable() from ~1k to ~100k quads.
 //
-// On three generated surfaces (benchmark_surfaces.h) at K = 100, the
+// On four generated surfaces (benchmark_surfaces.h) at K = 100, the
 // seashell parametrization (a full grid closed around its tube), a saddle
 // roof trimmed by an elliptic outline (a grid whose rows have different
-// lengths) and an oval torus (a grid closed both ways), from about 1k to
-// 100k quads, it prints a markdown table: the time of each
+// lengths), an oval torus (a grid closed both ways) and an elliptic dome
+// meshed with a pole (a fan of triangles, then rings of quads), from about
+// 1k to 100k quads, it prints a markdown table: the time of each
 // phase (validation, clustering, the displacement prediction that ranks the
 // candidate clusterings, their optimization, the improvement rounds, with
 // the sweep clusterings solved first from their exact start), the total,
@@ -220,6 +221,7 @@ int main(int argc, char** argv)
   series("seashell", benchmark_surfaces::seashell<Mesh>, {32, 100, 141, 224, 316});
   series("trimmed roof", benchmark_surfaces::trimmed_roof<Mesh>, {41, 130, 409});
   series("oval torus", benchmark_surfaces::oval_torus<Mesh>, {32, 100, 316});
+  series("polar dome", benchmark_surfaces::polar_dome<Mesh>, {32, 100, 315});
   std::cout << growth.str();
   return EXIT_SUCCESS;
 }

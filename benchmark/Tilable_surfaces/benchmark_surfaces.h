@@ -85,6 +85,32 @@ Mesh oval_torus(int n)
   });
 }
 
+// A dome meshed with a pole, as domes are: the cap of the ellipsoid
+// x^2 + (y / 0.7)^2 + (z / 0.8)^2 = 1 above its equator, a fan of n triangles
+// around the pole, then n rings of n quads down to the equator (n^2 quads).
+// Its section is an ellipse, so no two of its meridians are congruent.
+template <typename Mesh>
+Mesh polar_dome(int n)
+{
+  typedef typename Mesh::Point Point;
+  Mesh m;
+  const typename Mesh::Vertex_index pole = m.add_vertex(Point(0, 0, 0.8));
+  std::vector<typename Mesh::Vertex_index> v;
+  for(int i = 1; i <= n + 1; ++i)
+    for(int j = 0; j < n; ++j)
+    {
+      const double t = 0.5 * M_PI * i / (n + 1), s = 2 * M_PI * j / n;
+      v.push_back(m.add_vertex(Point(std::sin(t) * std::cos(s), 0.7 * std::sin(t) * std::sin(s), 0.8 * std::cos(t))));
+    }
+  auto id = [&](int i, int j) { return v[std::size_t(i * n + (j % n))]; };
+  for(int j = 0; j < n; ++j)
+    m.add_face(pole, id(0, j), id(0, j + 1));
+  for(int i = 0; i < n; ++i)
+    for(int j = 0; j < n; ++j)
+      m.add_face(id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+  return m;
+}
+
 // The process's high-water mark of resident memory (VmHWM) in MB since the
 // last reset_peak_memory(), -1 where /proc is not available.
 inline double peak_memory_mb()

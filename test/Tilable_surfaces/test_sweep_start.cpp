@@ -6,6 +6,7 @@
 
 #include "congruence_check.h"
 #include "optimization_test_helpers.h"
+#include "sweep_pipeline_check.h"
 #include "tube_mesh.h"
 
 #include <CGAL/Tilable_surfaces/internal/Optimization/sweep_start.h>
@@ -621,16 +622,44 @@ TEST(SweepStart, NoSweepAcrossASlit)
 // (segment candidates off) it is not.
 TEST(SweepStart, PipelineMakesATrimmedGridTilable)
 {
-  Mesh m = trimmed_roof();
-  Clustering c = add_clustering_maps(m);
-  const TS::K_set_tilable_result r = TS::make_k_set_tilable(
-    m, TS::parameters::number_of_tiles(6).number_of_iterations(0)
-         .face_cluster_map(c.cluster).face_orientation_map(c.orientation));
-  EXPECT_TRUE(r.is_tilable());
-  EXPECT_EQ(r.clustering.candidates[r.clustering.chosen_candidate].origin, TS::Clustering_candidate::GRID_SWEEPS);
-  EXPECT_LE(congruence_by_umeyama(m, c.cluster, c.orientation), 1e-6);
+  expect_tilable_only_through_a_sweep(trimmed_roof, 6);
+}
 
-  Mesh without = trimmed_roof();
-  EXPECT_FALSE(TS::make_k_set_tilable(without, TS::parameters::number_of_tiles(6).number_of_iterations(0)
-                                                 .use_segment_candidates(false)).is_tilable());
+// Above large_mesh_faces with number_of_optimized_candidates 0 (the default
+// there), an exact sweep ends the search, so cluster() makes no k-means,
+// strip or segment candidate: the pool is the merges' and the sweeps'. With
+// a candidate to optimize, those are made again. Either way the result is
+// tilable, checked independently (the growing horn's rings all differ, so
+// only a sweep is exact without iterations).
+TEST(SweepStart, LargeGridPoolEndsAtAnExactSweep)
+{
+  const int long_rings = 104, long_around = 50;  // 5,200 quads
+  ASSERT_GT(std::size_t(long_rings * long_around), TS::large_mesh_faces);
+  const auto long_horn = [&] {
+    return horn<Mesh>(long_rings, long_around, 3.0, 2.0, [](int i) { return 1.0 + 0.005 * i; });
+  };
+  auto origins = [](const TS::Clustering_result& r) {
+    std::set<TS::Clustering_candidate::Origin> o;
+    for(const TS::Clustering_candidate& c : r.candidates)
+      o.insert(c.origin);
+    return o;
+  };
+  for(int optimized : {-1, 1})
+  {
+    Mesh m = long_horn();
+    TS::K_set_tilable_surface surface(m);
+    const auto tiles = TS::parameters::number_of_tiles(60).number_of_iterations(0);
+    const std::set<TS::Clustering_candidate::Origin> made =
+      origins(optimized < 0 ? surface.cluster(tiles)
+                            : surface.cluster(tiles.number_of_optimized_candidates(std::size_t(optimized))));
+    EXPECT_EQ(made.count(TS::Clustering_candidate::GRID_SWEEPS), 1u);
+    EXPECT_EQ(made.count(TS::Clustering_candidate::QUAD_STRIPS), optimized < 0 ? 0u : 1u);
+    EXPECT_EQ(made.count(TS::Clustering_candidate::KMEANS), optimized < 0 ? 0u : 1u);
+    if(optimized > 0)
+      continue;  // solving candidates from the input at 5,200 quads is not what this test is for
+    surface.optimize_closest(tiles);
+    EXPECT_EQ(surface.clustering().candidates[surface.clustering().chosen_candidate].origin,
+              TS::Clustering_candidate::GRID_SWEEPS);
+    EXPECT_LE(congruence_by_umeyama(m, surface.face_cluster_map(), surface.face_orientation_map()), 1e-6);
+  }
 }

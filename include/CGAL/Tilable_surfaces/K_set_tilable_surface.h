@@ -167,8 +167,13 @@ public:
   }
 
   /// Stage 3: adds the k-means, quad-strip and grid-segment candidates that
-  /// the parameters of `initialize_clusters()` ask for. Returns the size of
-  /// the pool.
+  /// the parameters of `initialize_clusters()` ask for, and the sweep
+  /// clusterings (user manual, section TS_Sweeps). Above `large_mesh_faces`,
+  /// when those parameters leave `number_of_optimized_candidates` at 0 (its
+  /// default there) and a sweep clustering has an exact start, only the
+  /// sweeps are added: `optimize_closest()` with the same parameters ends
+  /// its search at that sweep and would never optimize the others. Returns
+  /// the size of the pool.
   std::size_t add_other_candidates()
   {
     with_concurrency([&] { clusterer().add_other_candidates(m_clustering); });
@@ -883,8 +888,19 @@ private:
     m_policy = internal::orientation_policy(np);
     m_similarity_threshold = parameters::choose_parameter(
       parameters::get_parameter(np, internal_np::similarity_threshold), defaults::similarity_threshold);
-    m_clusterer.reset(
-      new Clusterer(m_mesh, m_faces, input_point_map(), m_mean_edge_length, k, internal::clustering_settings(np)));
+    internal::Clustering_settings settings = internal::clustering_settings(np);
+    // optimize_closest() with the same parameters ends its search at an
+    // exact sweep there: the clusterer need not make the other candidates.
+    const std::size_t optimized =
+      parameters::choose_parameter(parameters::get_parameter(np, internal_np::number_of_optimized_candidates),
+                                   default_number_of_optimized_candidates(num_faces(m_mesh)));
+    if(num_faces(m_mesh) > large_mesh_faces && optimized == 0)
+      settings.sweep_ends_search = [mesh = &m_mesh, fim = m_fim, vim = m_vim, vpm = input_point_map(),
+                                    points = internal::read_points(m_mesh, input_point_map(), m_vim)](
+                                     const std::vector<std::size_t>& label) {
+        return internal::sweep_start(*mesh, fim, vim, vpm, points, label).rows() > 0;
+      };
+    m_clusterer.reset(new Clusterer(m_mesh, m_faces, input_point_map(), m_mean_edge_length, k, settings));
     m_clustering = Clustering_result();
     m_summary_is_stale = false;
   }

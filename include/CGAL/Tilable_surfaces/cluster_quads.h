@@ -35,6 +35,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <functional>
 #include <memory>
 #include <string>
 #include <type_traits>
@@ -206,6 +207,11 @@ struct Clustering_settings
   std::size_t exact_limit;
   Orientation_policy policy;
   unsigned int seed;
+  // Set by K_set_tilable_surface::cluster() when an exact sweep would end
+  // its search (above large_mesh_faces, no other candidate to optimize):
+  // whether the sweep clustering (by canonical index) has an exact start.
+  // If one has, the k-means, strip and segment candidates are not made.
+  std::function<bool(const std::vector<std::size_t>&)> sweep_ends_search;
 };
 
 template <typename NP>
@@ -300,8 +306,33 @@ public:
   // 2. The last beam of binary merges down to K.
   void merge_to_tile_count(Clustering_result& result) { add_hierarchical_candidates(result); }
 
-  // 3. The k-means, quad-strip and grid-segment candidates asked for.
+  // 3. The k-means, quad-strip and grid-segment candidates asked for, and
+  // the sweeps, made first but pooled last: when one ends the search
+  // (Clustering_settings::sweep_ends_search), the others would never be
+  // optimized, and are not made (35 of the 60 s of a 100k-quad roof).
   void add_other_candidates(Clustering_result& result)
+  {
+    // Triangles only as fans around poles (pole_fans.h).
+    const std::vector<std::vector<std::size_t> > sweeps =
+      m_settings.use_segments ? sweep_clusterings(m_pm, m_fim, m_vpm, m_k, m_settings.policy)
+                              : std::vector<std::vector<std::size_t> >();
+    const bool sweep_ends_search =
+      m_settings.sweep_ends_search && std::any_of(sweeps.begin(), sweeps.end(), m_settings.sweep_ends_search);
+    if(!sweep_ends_search)
+      add_kmeans_strip_and_segment_candidates(result);
+    for(const std::vector<std::size_t>& label : sweeps)
+      add_best_match_candidate(result, label, Clustering_candidate::GRID_SWEEPS);
+  }
+
+  // 4. The candidate of lowest score, its S-quads and orientations.
+  Cluster_shapes select(Clustering_result& result) const
+  {
+    choose(result);
+    return finish(result);
+  }
+
+private:
+  void add_kmeans_strip_and_segment_candidates(Clustering_result& result)
   {
     if(m_settings.use_kmeans && m_k > 1)
       add_kmeans_candidate(result);
@@ -314,19 +345,8 @@ public:
       for(const std::vector<std::size_t>& label :
           segment_clusterings(m_pm, m_fim, m_vpm, m_k, m_settings.policy))
         add_best_match_candidate(result, label, Clustering_candidate::GRID_SEGMENTS);
-    if(m_settings.use_segments && !m_triangles)
-      for(const std::vector<std::size_t>& label : sweep_clusterings(m_pm, m_fim, m_vpm, m_k, m_settings.policy))
-        add_best_match_candidate(result, label, Clustering_candidate::GRID_SWEEPS);
   }
 
-  // 4. The candidate of lowest score, its S-quads and orientations.
-  Cluster_shapes select(Clustering_result& result) const
-  {
-    choose(result);
-    return finish(result);
-  }
-
-private:
   void compute_affinity()
   {
     m_affinity.assign(m_n * m_n, 0.0);

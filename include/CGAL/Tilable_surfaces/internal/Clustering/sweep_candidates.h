@@ -32,6 +32,7 @@
 // must be the identity: M is made a rotation by a whole number of turns
 // over the R rows (close_up()), and the swept surface is one of revolution.
 
+#include <CGAL/Tilable_surfaces/internal/Clustering/pole_fans.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/segment_candidates.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/trimmed_grid.h>
 
@@ -592,11 +593,12 @@ inline bool split_columns_to(std::vector<std::size_t>& label, const Quad_grid& g
 // run that closes up (a rotation, close_up()): with more columns than k the
 // screw column runs, else every column cut into pieces of consecutive
 // quads (split_columns_to()). One per grid direction; none when the
-// leftover molds cannot be placed.
+// leftover molds cannot be placed. With `closed_only`, only the sweeps of
+// grids closed across their rows.
 template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
 std::vector<std::vector<std::size_t> >
-sweep_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, std::size_t k,
-                  Orientation_policy policy)
+quad_grid_sweep_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, std::size_t k,
+                            Orientation_policy policy, bool closed_only)
 {
   std::vector<std::vector<std::size_t> > result;
   const std::array<std::vector<std::size_t>, 2> strips = quad_strips(pm, fim);
@@ -606,7 +608,7 @@ sweep_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, s
     const Quad_grid grid = full_or_trimmed_grid(pm, fim, vpm, strips, row_direction, points);
     const std::size_t rows = grid.rows, columns = grid.columns;
     const bool trimmed = !points.cell.empty();
-    if(rows == 0)
+    if(rows == 0 || (closed_only && !closed_across_rows(grid, points)))
       continue;
     // Runs of rows need every row whole (run_option()): a trimmed grid is
     // one run, as a closed one is.
@@ -649,6 +651,31 @@ sweep_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, s
     relabel_by_first_face(label);
     result.push_back(label);
   }
+  return result;
+}
+
+// The sweep clusterings with k clusters of a quad grid
+// (quad_grid_sweep_clusterings()), or of a grid closed across its rows
+// capped by pole fans (pole_fans.h): the quads' sweeps with one cluster
+// fewer per fan, and each fan one cluster. None for other meshes.
+template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
+std::vector<std::vector<std::size_t> >
+sweep_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, std::size_t k,
+                  Orientation_policy policy)
+{
+  Pole_fans fans;
+  const Triangle_layout layout = pole_fans(pm, fim, CGAL::get_initialized_vertex_index_map(pm), vpm, fans);
+  if(layout == Triangle_layout::NONE)
+    return quad_grid_sweep_clusterings(pm, fim, vpm, k, policy, false);
+  const std::size_t fan_molds = fans.pole.size();
+  std::vector<std::vector<std::size_t> > result;
+  if(layout == Triangle_layout::OTHER || k <= fan_molds)
+    return result;
+  const Pole_fans::Quad_part& quads = fans.quads;
+  for(const std::vector<std::size_t>& label :
+      quad_grid_sweep_clusterings(quads, get(CGAL::face_index, quads), get(CGAL::vertex_point, quads),
+                                  k - fan_molds, policy, true))
+    result.push_back(with_fan_clusters(fans, label, num_faces(pm)));
   return result;
 }
 

@@ -23,6 +23,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <vector>
 
 namespace CGAL {
@@ -40,11 +41,12 @@ namespace internal {
 // orientation of every face (by face index) at which the clusters' quads
 // correspond corner by corner there, in grid order: exact, where a best
 // match on the swept shapes would pick among the symmetries of a
-// symmetric quad by round-off.
+// symmetric quad by round-off. With `closed_only`, only a grid closed
+// across its rows.
 template <typename PolygonMesh, typename FaceIndexMap, typename VertexIndexMap, typename VertexPointMap>
-Point_matrix sweep_start(const PolygonMesh& pm, FaceIndexMap fim, VertexIndexMap vim, VertexPointMap vpm,
-                         const Point_matrix& points, const std::vector<std::size_t>& label,
-                         std::vector<Quad_orientation>* orientation = nullptr)
+Point_matrix quad_grid_sweep_start(const PolygonMesh& pm, FaceIndexMap fim, VertexIndexMap vim, VertexPointMap vpm,
+                                   const Point_matrix& points, const std::vector<std::size_t>& label,
+                                   std::vector<Quad_orientation>* orientation, bool closed_only)
 {
   typedef typename boost::graph_traits<PolygonMesh>::face_descriptor face_descriptor;
   typedef typename boost::graph_traits<PolygonMesh>::halfedge_descriptor halfedge_descriptor;
@@ -68,6 +70,8 @@ Point_matrix sweep_start(const PolygonMesh& pm, FaceIndexMap fim, VertexIndexMap
     // trimmed grid, or one closed across its rows, is swept as one run
     // (sweep_clusterings()), whose columns may be cut into pieces.
     const bool closed = closed_across_rows(grid, points_of_grid);
+    if(closed_only && !closed)
+      continue;
     const bool one_run = closed || !points_of_grid.cell.empty();
     std::vector<std::size_t> run_of(rows, 0);
     for(std::size_t r = 1; r < rows && !one_run; ++r)
@@ -156,6 +160,60 @@ Point_matrix sweep_start(const PolygonMesh& pm, FaceIndexMap fim, VertexIndexMap
     return start;
   }
   return Point_matrix();
+}
+
+// The positions at which the sweep clustering `label` (by face index) of a
+// quad grid, or of one capped by pole fans, is exact: quad_grid_sweep_start()
+// of the grid, or of the capped grid's quads, which must then be closed
+// across its rows, with the poles put on the axes (pole_fans.h). Empty
+// when there is none; `orientation` as quad_grid_sweep_start() says, each
+// triangle's from its pole.
+template <typename PolygonMesh, typename FaceIndexMap, typename VertexIndexMap, typename VertexPointMap>
+Point_matrix sweep_start(const PolygonMesh& pm, FaceIndexMap fim, VertexIndexMap vim, VertexPointMap vpm,
+                         const Point_matrix& points, const std::vector<std::size_t>& label,
+                         std::vector<Quad_orientation>* orientation = nullptr)
+{
+  Pole_fans fans;
+  const Triangle_layout layout = pole_fans(pm, fim, vim, vpm, fans);
+  if(layout == Triangle_layout::NONE)
+    return quad_grid_sweep_start(pm, fim, vim, vpm, points, label, orientation, false);
+  const std::vector<std::size_t> quad_label =
+    layout == Triangle_layout::POLE_FANS ? quad_part_label(fans, label) : std::vector<std::size_t>();
+  if(quad_label.empty())
+    return Point_matrix();
+  const Pole_fans::Quad_part& quads = fans.quads;
+  Point_matrix quad_points(Eigen::Index(fans.vertex_of.size()), 3);
+  for(std::size_t v = 0; v < fans.vertex_of.size(); ++v)
+    quad_points.row(Eigen::Index(v)) = points.row(Eigen::Index(fans.vertex_of[v]));
+  std::vector<Quad_orientation> quad_orientation(quad_label.size());
+  const Point_matrix quad_start =
+    quad_grid_sweep_start(quads, get(CGAL::face_index, quads), get(CGAL::vertex_index, quads),
+                          get(CGAL::vertex_point, quads), quad_points, quad_label, &quad_orientation, true);
+  if(quad_start.rows() == 0)
+    return quad_start;
+  Point_matrix start = points;
+  for(std::size_t v = 0; v < fans.vertex_of.size(); ++v)
+    start.row(Eigen::Index(fans.vertex_of[v])) = quad_start.row(Eigen::Index(v));
+  if(!put_poles_on_axes(fans, start, points, Tilable_surfaces::mean_edge_length(quads)))
+    return Point_matrix();
+  if(orientation != nullptr)
+  {
+    // A quad's corner 0 in grid order, found in its face in the mesh.
+    for(std::size_t f = 0; f < quad_label.size(); ++f)
+    {
+      auto h = halfedge(Pole_fans::Quad_part::Face_index(std::uint32_t(f)), quads);
+      for(int i = 0; i < quad_orientation[f].index(); ++i)
+        h = next(h, quads);
+      const std::array<std::size_t, 4>& corners = fans.quad_corners[f];
+      const std::size_t first = fans.vertex_of[std::size_t(target(h, quads))];
+      (*orientation)[fans.face_of[f]] =
+        Quad_orientation(int(std::find(corners.begin(), corners.end(), first) - corners.begin()));
+    }
+    for(std::size_t fan = 0; fan < fans.triangles.size(); ++fan)
+      for(std::size_t t = 0; t < fans.triangles[fan].size(); ++t)
+        (*orientation)[fans.triangles[fan][t]] = Quad_orientation(fans.pole_corner[fan][t]);
+  }
+  return start;
 }
 
 } // namespace internal

@@ -1,0 +1,237 @@
+// Copyright (c) 2026 Tilable_surfaces contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_POLE_FANS_H
+#define CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_POLE_FANS_H
+
+// Quad grids capped by fans of triangles around poles: a dome meshed with a
+// pole at its top, or a closed shell with two. Its quads alone form a grid
+// closed across its rows (the meridian strips), whose sweep is a rotation
+// that closes up (sweep_candidates.h): each fan's rim, the loop of its
+// triangles' outer edges, is then one orbit of that rotation, a regular
+// polygon about its axis. With the pole put on the axis, the rotation maps
+// every triangle of the fan onto the next, corner by corner from the pole:
+// the fan is one S-triangle. So such a mesh sweeps as its quads do, with one
+// more mold per fan.
+
+#include <CGAL/Tilable_surfaces/internal/Clustering/strip_candidates.h>
+#include <CGAL/Tilable_surfaces/internal/Tilable_problem.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/helpers.h>
+
+#include <Eigen/SVD>
+
+#include <algorithm>
+#include <array>
+#include <vector>
+
+namespace CGAL {
+namespace Tilable_surfaces {
+namespace internal {
+
+// The quads of a mesh whose triangles all lie in pole fans, as a mesh of
+// their own, and the fans.
+struct Pole_fans
+{
+  typedef CGAL::Surface_mesh<CGAL::Exact_predicates_inexact_constructions_kernel::Point_3> Quad_part;
+
+  Quad_part quads;                      // the quad faces alone, in face index order
+  std::vector<std::size_t> face_of;     // per face of `quads`: its face index in the mesh
+  std::vector<std::size_t> vertex_of;   // per vertex of `quads`: its vertex index in the mesh
+  // Per face of `quads`: the vertex indices in the mesh of its face's vertices, in order.
+  std::vector<std::array<std::size_t, 4> > quad_corners;
+  std::vector<std::size_t> pole;        // per fan: the vertex index of its pole
+  std::vector<std::vector<std::size_t> > triangles;  // per fan: its faces' indices, in index order
+  std::vector<std::vector<int> > pole_corner;        // per fan and triangle: the pole's place in the face (0..2)
+  // Per fan and triangle: the vertex indices of its corners from the pole on.
+  std::vector<std::vector<std::array<std::size_t, 3> > > corners;
+};
+
+// What the triangles of a mesh are.
+enum class Triangle_layout { NONE, POLE_FANS, OTHER };
+
+// Whether `pm` has no triangle, or has quads and triangles all in pole fans
+// (filled in `fans`), or something else: a face of another size, a triangle
+// with no pole or two, no quad. A pole is an interior vertex all of whose
+// faces are triangles.
+template <typename PolygonMesh, typename FaceIndexMap, typename VertexIndexMap, typename VertexPointMap>
+Triangle_layout pole_fans(const PolygonMesh& pm, FaceIndexMap fim, VertexIndexMap vim, VertexPointMap vpm,
+                          Pole_fans& fans)
+{
+  typedef typename boost::graph_traits<PolygonMesh>::face_descriptor face_descriptor;
+  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename boost::graph_traits<PolygonMesh>::halfedge_descriptor halfedge_descriptor;
+  fans = Pole_fans();
+  std::vector<face_descriptor> face_by_index(num_faces(pm));
+  bool triangles = false;
+  for(face_descriptor f : faces(pm))
+  {
+    face_by_index[std::size_t(get(fim, f))] = f;
+    const std::size_t n = degree(f, pm);
+    if(n != 3 && n != 4)
+      return Triangle_layout::OTHER;
+    triangles = triangles || n == 3;
+  }
+  if(!triangles)
+    return Triangle_layout::NONE;
+  auto is_pole = [&](vertex_descriptor v) {
+    if(is_border(v, pm))
+      return false;
+    for(face_descriptor f : faces_around_target(halfedge(v, pm), pm))
+      if(degree(f, pm) != 3)
+        return false;
+    return true;
+  };
+  // Vertex indices need not be dense (a Surface_mesh with removed elements).
+  std::size_t vertex_slots = 0;
+  for(vertex_descriptor v : vertices(pm))
+    vertex_slots = (std::max)(vertex_slots, std::size_t(get(vim, v)) + 1);
+  std::vector<std::size_t> fan_of_pole(vertex_slots, no_index()), sub_vertex(vertex_slots, no_index());
+  for(std::size_t i = 0; i < face_by_index.size(); ++i)
+  {
+    const face_descriptor f = face_by_index[i];
+    std::vector<Pole_fans::Quad_part::Vertex_index> corners;
+    std::array<std::size_t, 4> quad;
+    int pole_corner = -1, poles = 0;
+    halfedge_descriptor h = halfedge(f, pm);
+    for(int j = 0; j < int(degree(f, pm)); ++j, h = next(h, pm))
+    {
+      const vertex_descriptor v = target(h, pm);
+      const std::size_t index = std::size_t(get(vim, v));
+      quad[std::size_t(j % 4)] = index;
+      if(degree(f, pm) == 3)
+      {
+        if(is_pole(v))
+        {
+          pole_corner = j;
+          ++poles;
+        }
+        continue;
+      }
+      if(sub_vertex[index] == no_index())
+      {
+        sub_vertex[index] = fans.vertex_of.size();
+        fans.vertex_of.push_back(index);
+        const Eigen::Vector3d p = to_eigen(get(vpm, v));
+        fans.quads.add_vertex(Pole_fans::Quad_part::Point(p.x(), p.y(), p.z()));
+      }
+      corners.push_back(Pole_fans::Quad_part::Vertex_index(std::uint32_t(sub_vertex[index])));
+    }
+    if(degree(f, pm) == 4)
+    {
+      // Same vertex order as the face (its first halfedge may differ:
+      // sweep_start() maps orientations through quad_corners).
+      if(fans.quads.add_face(corners) == Pole_fans::Quad_part::null_face())
+        return Triangle_layout::OTHER;
+      fans.face_of.push_back(i);
+      fans.quad_corners.push_back(quad);
+      continue;
+    }
+    if(poles != 1)
+      return Triangle_layout::OTHER;
+    halfedge_descriptor p = halfedge(f, pm);
+    for(int j = 0; j < pole_corner; ++j)
+      p = next(p, pm);
+    std::array<std::size_t, 3> triangle;
+    for(int j = 0; j < 3; ++j, p = next(p, pm))
+      triangle[std::size_t(j)] = std::size_t(get(vim, target(p, pm)));
+    std::size_t& fan = fan_of_pole[triangle[0]];
+    if(fan == no_index())
+    {
+      fan = fans.pole.size();
+      fans.pole.push_back(triangle[0]);
+      fans.triangles.emplace_back();
+      fans.pole_corner.emplace_back();
+      fans.corners.emplace_back();
+    }
+    fans.triangles[fan].push_back(i);
+    fans.pole_corner[fan].push_back(pole_corner);
+    fans.corners[fan].push_back(triangle);
+  }
+  return fans.face_of.empty() ? Triangle_layout::OTHER : Triangle_layout::POLE_FANS;
+}
+
+// A clustering of the quad part lifted to the mesh of `face_count` faces:
+// the quads keep theirs, each fan is one more cluster; numbered by first
+// face.
+inline std::vector<std::size_t> with_fan_clusters(const Pole_fans& fans, const std::vector<std::size_t>& quad_label,
+                                                  std::size_t face_count)
+{
+  std::vector<std::size_t> label(face_count, 0);
+  const std::size_t quad_clusters = *std::max_element(quad_label.begin(), quad_label.end()) + 1;
+  for(std::size_t f = 0; f < quad_label.size(); ++f)
+    label[fans.face_of[f]] = quad_label[f];
+  for(std::size_t fan = 0; fan < fans.triangles.size(); ++fan)
+    for(std::size_t f : fans.triangles[fan])
+      label[f] = quad_clusters + fan;
+  relabel_by_first_face(label);
+  return label;
+}
+
+// The quads' part of `label` (by face index of the mesh), by face of the
+// quad part; empty when a fan's triangles are not one cluster of their own.
+inline std::vector<std::size_t> quad_part_label(const Pole_fans& fans, const std::vector<std::size_t>& label)
+{
+  std::vector<std::size_t> fan_cluster;
+  for(const std::vector<std::size_t>& triangles : fans.triangles)
+  {
+    fan_cluster.push_back(label[triangles.front()]);
+    for(std::size_t f : triangles)
+      if(label[f] != fan_cluster.back())
+        return {};
+  }
+  std::vector<std::size_t> quad_label(fans.face_of.size());
+  for(std::size_t f = 0; f < quad_label.size(); ++f)
+  {
+    quad_label[f] = label[fans.face_of[f]];
+    if(std::count(fan_cluster.begin(), fan_cluster.end(), quad_label[f]) > 0)
+      return {};
+  }
+  std::vector<std::size_t> sorted = fan_cluster;
+  std::sort(sorted.begin(), sorted.end());
+  if(std::adjacent_find(sorted.begin(), sorted.end()) != sorted.end())
+    return {};
+  return quad_label;
+}
+
+// Puts each fan's pole of `points` (by vertex index of the mesh) on the axis
+// of its rim, which is a regular polygon when the quads are swept: the
+// rim's centre, moved along the normal of its plane to the height of the
+// pole of `input`. False when the fan's triangles do not all come out
+// congruent (their edge lengths within 1e-9 of `length`, the mean edge
+// length): the rim was not such a polygon.
+inline bool put_poles_on_axes(const Pole_fans& fans, Point_matrix& points, const Point_matrix& input, double length)
+{
+  auto point = [&](std::size_t v) { return Eigen::Vector3d(points.row(Eigen::Index(v)).transpose()); };
+  for(std::size_t fan = 0; fan < fans.pole.size(); ++fan)
+  {
+    const std::vector<std::array<std::size_t, 3> >& triangles = fans.corners[fan];
+    Eigen::Matrix3Xd rim(3, Eigen::Index(triangles.size()));
+    for(std::size_t t = 0; t < triangles.size(); ++t)
+      rim.col(Eigen::Index(t)) = point(triangles[t][1]);
+    const Eigen::Vector3d centre = rim.rowwise().mean();
+    const Eigen::Matrix3Xd centred = rim.colwise() - centre;
+    const Eigen::Vector3d normal = Eigen::JacobiSVD<Eigen::Matrix3d>(centred * centred.transpose(),
+                                                                     Eigen::ComputeFullU).matrixU().col(2);
+    const Eigen::Vector3d input_pole = input.row(Eigen::Index(fans.pole[fan])).transpose();
+    const Eigen::Vector3d pole = centre + normal.dot(input_pole - centre) * normal;
+    points.row(Eigen::Index(fans.pole[fan])) = pole.transpose();
+    auto edges = [&](const std::array<std::size_t, 3>& t) {
+      return Eigen::Vector3d((point(t[1]) - point(t[0])).norm(), (point(t[2]) - point(t[1])).norm(),
+                             (point(t[0]) - point(t[2])).norm());
+    };
+    const Eigen::Vector3d first = edges(triangles.front());
+    for(const std::array<std::size_t, 3>& t : triangles)
+      if((edges(t) - first).cwiseAbs().maxCoeff() > 1e-9 * length)
+        return false;
+  }
+  return true;
+}
+
+} // namespace internal
+} // namespace Tilable_surfaces
+} // namespace CGAL
+
+#endif // CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_POLE_FANS_H

@@ -61,6 +61,31 @@ inline auto clustering_parameters(const Clustering& c)
   return TS::parameters::face_cluster_map(c.cluster).face_orientation_map(c.orientation);
 }
 
+// `m` with its vertices at the rows of `points` (by vertex index).
+template <typename Points>
+Mesh moved_to(const Mesh& m, const Points& points)
+{
+  Mesh moved = m;
+  for(Vertex v : vertices(moved))
+    moved.point(v) = Point(points(int(v), 0), points(int(v), 1), points(int(v), 2));
+  return moved;
+}
+
+// Clustering maps on `m` holding `label` (by face index) and `orientation`,
+// every orientation 0 when it is empty.
+inline Clustering clustered(Mesh& m, const std::vector<std::size_t>& label,
+                            const std::vector<TS::Quad_orientation>& orientation = {})
+{
+  Clustering c = add_clustering_maps(m);
+  for(Face f : faces(m))
+  {
+    c.cluster[f] = int(label[std::size_t(f)]);
+    if(!orientation.empty())
+      c.orientation[f] = orientation[std::size_t(f)].index();
+  }
+  return c;
+}
+
 // Every face its own cluster, orientation 0.
 inline Clustering every_face_alone(Mesh& mesh)
 {

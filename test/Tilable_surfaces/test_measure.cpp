@@ -92,6 +92,30 @@ TEST(Measure, QuadTranslatedOffThePlane)
   EXPECT_LE(m.congruence_error, 1e-15);
 }
 
+TEST(Measure, DistancesAreToTheNearestPointNotTheCorrespondingOne)
+{
+  // The result slid by half a square along the strip and lifted by 0.1: a
+  // sample's corresponding point of the input is at distance sqrt(0.26),
+  // the input itself at 0.1 below it, except past the input's end x = 2.
+  Mesh input = two_squares();
+  Mesh result = input;
+  const Clustering c = every_face_alone(result);
+  for(Vertex v : vertices(result))
+    result.point(v) = result.point(v) + Kernel::Vector_3(0.5, 0, 0.1);
+  const TS::Tilability_measure m = TS::measure_tilability(result, input, clustering_parameters(c));
+  // The 24 samples of the result (6 vertices; per square its centre, 4 edge
+  // midpoints, 4 fan-triangle centroids): past x = 2 lie the 2 vertices and
+  // the edge midpoint at x = 2.5, and one fan centroid at x = 7/3; the
+  // other 20 are above the input. By symmetry the input's samples are as
+  // far from the result.
+  const double far = std::sqrt(0.26), centroid = std::sqrt(1.0 / 9 + 0.01);
+  const double diagonal = std::sqrt(5.0), mean = (3 * far + centroid + 20 * 0.1) / 24;
+  EXPECT_DOUBLE_EQ(m.max_approximation_error, far / diagonal);
+  EXPECT_DOUBLE_EQ(m.mean_approximation_error, mean / diagonal);
+  EXPECT_DOUBLE_EQ(m.max_coverage_error, far / diagonal);
+  EXPECT_DOUBLE_EQ(m.mean_coverage_error, mean / diagonal);
+}
+
 TEST(Measure, CongruenceErrorAgreesWithPairwiseFits)
 {
   // Non-congruent instances: the monkey saddle in one cluster. The package's

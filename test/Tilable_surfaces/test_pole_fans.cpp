@@ -72,22 +72,6 @@ TSI::Point_matrix input_points(const Mesh& m)
   return TSI::read_points(m, get(CGAL::vertex_point, m), get(CGAL::vertex_index, m));
 }
 
-// `m` moved to `points`, with clustering maps holding `label` and `orientation`.
-Mesh moved_and_clustered(const Mesh& m, const TSI::Point_matrix& points, const std::vector<std::size_t>& label,
-                         const std::vector<TS::Quad_orientation>& orientation, Clustering& c)
-{
-  Mesh moved = m;
-  for(Vertex v : vertices(moved))
-    moved.point(v) = Point(points(int(v), 0), points(int(v), 1), points(int(v), 2));
-  c = add_clustering_maps(moved);
-  for(Face f : faces(moved))
-  {
-    c.cluster[f] = int(label[std::size_t(f)]);
-    c.orientation[f] = orientation[std::size_t(f)].index();
-  }
-  return moved;
-}
-
 } // namespace
 
 // The dome's 8 triangles are one fan around vertex 0, each with the pole as
@@ -165,10 +149,10 @@ TEST(PoleFans, CappedDomeSweepsAsARotation)
     TSI::sweep_start(m, get(CGAL::face_index, m), get(CGAL::vertex_index, m), get(CGAL::vertex_point, m), input,
                      label, &orientation);
   ASSERT_EQ(std::size_t(start.rows()), num_vertices(m));
-  Clustering at_input, at_start;
-  Mesh not_moved = moved_and_clustered(m, input, label, orientation, at_input);
+  Mesh not_moved = moved_to(m, input), moved = moved_to(m, start);
+  const Clustering at_input = clustered(not_moved, label, orientation),
+                   at_start = clustered(moved, label, orientation);
   EXPECT_GT(congruence_by_umeyama(not_moved, at_input.cluster, at_input.orientation), 1e-2);
-  Mesh moved = moved_and_clustered(m, start, label, orientation, at_start);
   EXPECT_LE(congruence_by_umeyama(moved, at_start.cluster, at_start.orientation), 1e-9);
   EXPECT_LE((start.row(0) - input.row(0)).norm(), 1e-9);
   EXPECT_GT((start - input).rowwise().norm().bottomRows(around * loops).minCoeff(), 1e-3);
@@ -184,8 +168,8 @@ TEST(PoleFans, CappedDomeSweepsAsARotation)
   ASSERT_EQ(std::size_t(off_start.rows()), num_vertices(m));
   EXPECT_LE((off_start.row(0) - Eigen::RowVector3d(0, 0, 0.75)).norm(), 1e-9);
   EXPECT_LE((off_start.bottomRows(around * loops) - start.bottomRows(around * loops)).norm(), 1e-9);
-  Clustering off_c;
-  Mesh off_moved = moved_and_clustered(off_axis, off_start, label, orientation, off_c);
+  Mesh off_moved = moved_to(off_axis, off_start);
+  const Clustering off_c = clustered(off_moved, label, orientation);
   EXPECT_LE(congruence_by_umeyama(off_moved, off_c.cluster, off_c.orientation), 1e-9);
 }
 
@@ -226,8 +210,8 @@ TEST(PoleFans, ClosedShellHasAMoldPerFan)
     TSI::sweep_start(m, get(CGAL::face_index, m), get(CGAL::vertex_index, m), get(CGAL::vertex_point, m), input,
                      label, &orientation);
   ASSERT_EQ(std::size_t(start.rows()), num_vertices(m));
-  Clustering c;
-  Mesh moved = moved_and_clustered(m, start, label, orientation, c);
+  Mesh moved = moved_to(m, start);
+  const Clustering c = clustered(moved, label, orientation);
   EXPECT_LE(congruence_by_umeyama(moved, c.cluster, c.orientation), 1e-9);
   for(std::size_t pole : fans.pole)
     EXPECT_LE((start.row(Eigen::Index(pole)) - input.row(Eigen::Index(pole))).norm(), 1e-9);

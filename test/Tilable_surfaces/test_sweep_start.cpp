@@ -73,25 +73,6 @@ TSI::Point_matrix start_of(const Mesh& m, const std::vector<std::size_t>& label)
                           TSI::read_points(m, get(CGAL::vertex_point, m), get(CGAL::vertex_index, m)), label);
 }
 
-// `m` with its vertices at `points` (by vertex index).
-Mesh moved_to(const Mesh& m, const TSI::Point_matrix& points)
-{
-  Mesh moved = m;
-  for(Vertex v : vertices(moved))
-    moved.point(v) = Point(points(int(v), 0), points(int(v), 1), points(int(v), 2));
-  return moved;
-}
-
-// Clustering maps on `m` holding `label`; every face of a sweep has its
-// corners in the same order, so every orientation is 0.
-Clustering clustered(Mesh& m, const std::vector<std::size_t>& label)
-{
-  Clustering c = add_clustering_maps(m);
-  for(Face f : faces(m))
-    c.cluster[f] = int(label[std::size_t(f)]);
-  return c;
-}
-
 // The largest distance between ring i of `points` (vertex index
 // i * around + j, tube_mesh.h) fitted rigidly onto ring 0, and ring i.
 double ring_spread(const TSI::Point_matrix& points)
@@ -471,15 +452,6 @@ TSI::Point_matrix start_of(const Mesh& m, const std::vector<std::size_t>& label,
                           &orientation);
 }
 
-Clustering clustered(Mesh& m, const std::vector<std::size_t>& label,
-                     const std::vector<TS::Quad_orientation>& orientation)
-{
-  Clustering c = clustered(m, label);
-  for(Face f : faces(m))
-    c.orientation[f] = orientation[std::size_t(f)].index();
-  return c;
-}
-
 // The sweep clustering `label` of `m` is not exact at the input, and exact
 // at its start, which places every vertex; checked independently.
 void expect_exact_only_at_start(const Mesh& m, const std::vector<std::size_t>& label)
@@ -644,18 +616,17 @@ TEST(SweepStart, LargeGridPoolEndsAtAnExactSweep)
       o.insert(c.origin);
     return o;
   };
-  for(int optimized : {-1, 1})
+  for(bool by_default : {true, false})
   {
     Mesh m = long_horn();
     TS::K_set_tilable_surface surface(m);
     const auto tiles = TS::parameters::number_of_tiles(60).number_of_iterations(0);
     const std::set<TS::Clustering_candidate::Origin> made =
-      origins(optimized < 0 ? surface.cluster(tiles)
-                            : surface.cluster(tiles.number_of_optimized_candidates(std::size_t(optimized))));
+      origins(by_default ? surface.cluster(tiles) : surface.cluster(tiles.number_of_optimized_candidates(1)));
     EXPECT_EQ(made.count(TS::Clustering_candidate::GRID_SWEEPS), 1u);
-    EXPECT_EQ(made.count(TS::Clustering_candidate::QUAD_STRIPS), optimized < 0 ? 0u : 1u);
-    EXPECT_EQ(made.count(TS::Clustering_candidate::KMEANS), optimized < 0 ? 0u : 1u);
-    if(optimized > 0)
+    EXPECT_EQ(made.count(TS::Clustering_candidate::QUAD_STRIPS), by_default ? 0u : 1u);
+    EXPECT_EQ(made.count(TS::Clustering_candidate::KMEANS), by_default ? 0u : 1u);
+    if(!by_default)
       continue;  // solving candidates from the input at 5,200 quads is not what this test is for
     surface.optimize_closest(tiles);
     EXPECT_EQ(surface.clustering().candidates[surface.clustering().chosen_candidate].origin,

@@ -100,7 +100,6 @@ Triangle_layout pole_fans(const PolygonMesh& pm, FaceIndexMap fim, VertexIndexMa
     {
       const vertex_descriptor v = target(h, pm);
       const std::size_t index = std::size_t(get(vim, v));
-      quad[std::size_t(j % 4)] = index;
       if(degree(f, pm) == 3)
       {
         if(is_pole(v))
@@ -110,6 +109,7 @@ Triangle_layout pole_fans(const PolygonMesh& pm, FaceIndexMap fim, VertexIndexMa
         }
         continue;
       }
+      quad[std::size_t(j)] = index;
       if(sub_vertex[index] == no_index())
       {
         sub_vertex[index] = fans.vertex_of.size();

@@ -11,11 +11,14 @@
 
 #include <CGAL/Tilable_surfaces/internal/Optimization/sweep_start.h>
 #include <CGAL/Tilable_surfaces/make_k_set_tilable.h>
+#include <CGAL/boost/graph/generators.h>
 
 #include <gtest/gtest.h>
 
 #include <Eigen/Geometry>
 
+#include <algorithm>
+#include <cstddef>
 #include <limits>
 #include <map>
 #include <set>
@@ -595,6 +598,66 @@ TEST(SweepStart, NoSweepAcrossASlit)
 TEST(SweepStart, PipelineMakesATrimmedGridTilable)
 {
   expect_tilable_only_through_a_sweep(trimmed_roof, 6);
+}
+
+// `m` with the corners of face f listed from its corner (3 f + f / 5) mod 4:
+// the same surface, its faces started at any corner, as some CAD exports
+// write them, so that a strip crosses neighbouring faces through face edges
+// of different parities.
+Mesh faces_started_anywhere(const Mesh& m)
+{
+  Mesh out;
+  for(Vertex v : vertices(m))
+    out.add_vertex(m.point(v));
+  for(Face f : faces(m))
+  {
+    std::vector<Vertex> corners;
+    for(Vertex v : CGAL::vertices_around_face(halfedge(f, m), m))
+      corners.push_back(v);
+    const std::size_t i = std::size_t(f);
+    std::rotate(corners.begin(), corners.begin() + std::ptrdiff_t((3 * i + i / 5) % corners.size()), corners.end());
+    out.add_face(corners);
+  }
+  return out;
+}
+
+// The growing horn with its faces started anywhere is still the grid of its
+// 9 rings by 8 lines, one way and the other, with 9 + 8 strips; it has the
+// same sweeps as the horn, and the pipeline makes it tilable through one
+// where nothing else is exact without solver iterations.
+TEST(SweepStart, GridWhoseFacesStartAtAnyCornerIsSwept)
+{
+  const Mesh horn = growing_horn(), scrambled = faces_started_anywhere(horn);
+  const auto strips = TSI::quad_strips(scrambled, get(CGAL::face_index, scrambled));
+  std::vector<std::size_t> counts;
+  for(int d = 0; d < 2; ++d)
+  {
+    counts.push_back(std::set<std::size_t>(strips[d].begin(), strips[d].end()).size());
+    const TSI::Quad_grid grid =
+      TSI::quad_grid(scrambled, get(CGAL::face_index, scrambled), get(CGAL::vertex_point, scrambled), strips, d);
+    EXPECT_EQ(grid.rows * grid.columns, num_faces(scrambled)) << "row direction " << d;
+  }
+  std::sort(counts.begin(), counts.end());
+  EXPECT_EQ(counts, (std::vector<std::size_t>{std::size_t(around), std::size_t(rings)}));
+  typedef std::set<std::vector<std::size_t> > Labels;
+  const std::vector<std::vector<std::size_t> > swept = sweeps(scrambled, 8), horn_swept = sweeps(horn, 8);
+  EXPECT_FALSE(swept.empty());
+  EXPECT_EQ(Labels(swept.begin(), swept.end()), Labels(horn_swept.begin(), horn_swept.end()));
+  expect_tilable_only_through_a_sweep([] { return faces_started_anywhere(growing_horn()); }, 8);
+}
+
+// On a cube every vertex has valence 3 and each of its 3 strips crosses the
+// other two: no two directions can be carried across all edges, and every
+// face keeps the parity of its own face edges (all flips 0), started at any
+// corner or not.
+TEST(SweepStart, CubeStripsKeepEachFacesParity)
+{
+  Mesh cube;
+  CGAL::make_hexahedron(Point(0, 0, 0), Point(1, 0, 0), Point(1, 1, 0), Point(0, 1, 0), Point(0, 1, 1),
+                        Point(0, 0, 1), Point(1, 0, 1), Point(1, 1, 1), cube);
+  ASSERT_EQ(num_faces(cube), 6u);
+  for(const Mesh& m : {cube, faces_started_anywhere(cube)})
+    EXPECT_EQ(TSI::strip_direction_flips(m, get(CGAL::face_index, m)), std::vector<int>(6, 0));
 }
 
 // Above large_mesh_faces with number_of_optimized_candidates 0 (the default

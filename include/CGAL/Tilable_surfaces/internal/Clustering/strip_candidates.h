@@ -36,6 +36,7 @@
 
 #include <algorithm>
 #include <array>
+#include <deque>
 #include <limits>
 #include <vector>
 
@@ -85,21 +86,85 @@ inline void split_to(std::size_t k, const std::vector<Panel>& quads,
   }
 }
 
-// The strip of every face in each direction: strip[d][f] for the strip that
-// crosses face f through its face edges d and d + 2 (numbered 0..S_d - 1 by
-// first face).
+// The parity of the place of `h` among the face edges of its face.
+template <typename PolygonMesh>
+int face_edge_parity(typename boost::graph_traits<PolygonMesh>::halfedge_descriptor h, const PolygonMesh& pm)
+{
+  const auto face_edges = face_edge_halfedges(face(h, pm), pm);
+  return int(std::find(face_edges.begin(), face_edges.end(), h) - face_edges.begin()) % 2;
+}
+
+// Per face, 1 when its face edges 1 and 3, not 0 and 2, are crossed by the
+// strips that face 0's edges 0 and 2 are crossed by, as far as the strips
+// can be told apart that way: across an edge, a strip leaves one face
+// through a face edge of parity p and enters the next through one of
+// parity q, so their flips differ by p xor q. Where a file starts its faces
+// at any corner (a CAD export), this is what lets a grid be seen as one;
+// on an all-quad mesh whose flips disagree somewhere (a strip that meets
+// itself, as around a vertex of odd valence), or with triangles, all 0.
+// Flipped as a whole when more faces would be flipped than not, so that
+// face 0's own corners do not decide it.
 template <typename PolygonMesh, typename FaceIndexMap>
-std::array<std::vector<std::size_t>, 2> quad_strips(const PolygonMesh& pm, FaceIndexMap fim)
+std::vector<int> strip_direction_flips(const PolygonMesh& pm, FaceIndexMap fim)
+{
+  typedef typename boost::graph_traits<PolygonMesh>::face_descriptor face_descriptor;
+  const std::size_t n = num_faces(pm);
+  std::vector<face_descriptor> face_of(n);
+  for(face_descriptor f : faces(pm))
+  {
+    if(degree(f, pm) != 4)
+      return std::vector<int>(n, 0);
+    face_of[std::size_t(get(fim, f))] = f;
+  }
+  std::vector<int> flip(n, -1);
+  std::size_t flipped = 0;
+  for(std::size_t start = 0; start < n; ++start)
+  {
+    if(flip[start] >= 0)
+      continue;
+    flip[start] = 0;
+    std::deque<std::size_t> queue(1, start);
+    while(!queue.empty())
+    {
+      const std::size_t f = queue.front();
+      queue.pop_front();
+      for(auto h : face_edge_halfedges(face_of[f], pm))
+      {
+        if(is_border(opposite(h, pm), pm))
+          continue;
+        const face_descriptor g = face(opposite(h, pm), pm);
+        const std::size_t gi = std::size_t(get(fim, g));
+        const int expected = flip[f] ^ face_edge_parity(h, pm) ^ face_edge_parity(opposite(h, pm), pm);
+        if(flip[gi] < 0)
+        {
+          flip[gi] = expected;
+          flipped += std::size_t(expected);
+          queue.push_back(gi);
+        }
+        else if(flip[gi] != expected)
+          return std::vector<int>(n, 0);
+      }
+    }
+  }
+  if(2 * flipped > n)
+    for(int& x : flip)
+      x ^= 1;
+  return flip;
+}
+
+// The strip of every face in each direction: strip[d][f] for the strip that
+// crosses face f through its face edges d xor flip and d xor flip + 2, with
+// the flips of strip_direction_flips(), or all flips 0 without
+// `carried_directions` (numbered 0..S_d - 1 by first face).
+template <typename PolygonMesh, typename FaceIndexMap>
+std::array<std::vector<std::size_t>, 2> quad_strips(const PolygonMesh& pm, FaceIndexMap fim,
+                                                    bool carried_directions = true)
 {
   const std::size_t n = num_faces(pm);
   Union_find<> sets(2 * n);
   // Node 2 f + (j mod 2): face f's strip through its face edge j.
   auto node = [&](typename boost::graph_traits<PolygonMesh>::halfedge_descriptor h) {
-    const auto f = face(h, pm);
-    const auto face_edges = face_edge_halfedges(f, pm);
-    const std::size_t j =
-      std::size_t(std::find(face_edges.begin(), face_edges.end(), h) - face_edges.begin());
-    return 2 * std::size_t(get(fim, f)) + j % 2;
+    return 2 * std::size_t(get(fim, face(h, pm))) + std::size_t(face_edge_parity(h, pm));
   };
   for(auto e : edges(pm))
   {
@@ -108,11 +173,13 @@ std::array<std::vector<std::size_t>, 2> quad_strips(const PolygonMesh& pm, FaceI
       continue;
     sets.unite(node(h), node(opposite(h, pm)));
   }
+  const std::vector<int> flip =
+    carried_directions ? strip_direction_flips(pm, fim) : std::vector<int>(n, 0);
   std::array<std::vector<std::size_t>, 2> strip{{std::vector<std::size_t>(n), std::vector<std::size_t>(n)}};
   for(int d = 0; d < 2; ++d)
   {
     for(std::size_t f = 0; f < n; ++f)
-      strip[d][f] = sets.find(2 * f + std::size_t(d));
+      strip[d][f] = sets.find(2 * f + std::size_t(d ^ flip[f]));
     relabel_by_first_face(strip[d]);
   }
   return strip;
@@ -217,7 +284,11 @@ strip_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, c
                   const std::vector<Quad_descriptor>& descriptors, std::size_t k,
                   Orientation_policy policy, CGAL::Random& random, std::size_t max_strips = 400)
 {
-  std::array<std::vector<std::size_t>, 2> strips = quad_strips(pm, fim);
+  // Each face's strips filed by the parity of its own face edges, as before
+  // the grids carried the directions: carried here too, they change the
+  // candidates of a file whose faces start at any corner, and made
+  // free_negshell_marc_anet's result cross itself (results.md, stop 31).
+  std::array<std::vector<std::size_t>, 2> strips = quad_strips(pm, fim, false);
   const bool triangles = has_triangles(quads);
   std::array<std::size_t, 2> count;
   for(int d = 0; d < 2; ++d)

@@ -600,6 +600,8 @@ TEST(SweepStart, PipelineMakesATrimmedGridTilable)
   expect_tilable_only_through_a_sweep(trimmed_roof, 6);
 }
 
+namespace {
+
 // `m` with the corners of face f listed from its corner (3 f + f / 5) mod 4:
 // the same surface, its faces started at any corner, as some CAD exports
 // write them, so that a strip crosses neighbouring faces through face edges
@@ -620,6 +622,8 @@ Mesh faces_started_anywhere(const Mesh& m)
   }
   return out;
 }
+
+} // namespace
 
 // The growing horn with its faces started anywhere is still the grid of its
 // 9 rings by 8 lines, one way and the other, with 9 + 8 strips; it has the

@@ -18,6 +18,7 @@
 #include <Eigen/Geometry>
 
 #include <algorithm>
+#include <array>
 #include <cstddef>
 #include <limits>
 #include <map>
@@ -602,11 +603,10 @@ TEST(SweepStart, PipelineMakesATrimmedGridTilable)
 
 namespace {
 
-// `m` with the corners of face f listed from its corner (3 f + f / 5) mod 4:
-// the same surface, its faces started at any corner, as some CAD exports
-// write them, so that a strip crosses neighbouring faces through face edges
-// of different parities.
-Mesh faces_started_anywhere(const Mesh& m)
+// `m` with the corners of face f listed from its corner first_corner(f):
+// the same surface, its faces started elsewhere.
+template <typename FirstCorner>
+Mesh faces_started_at(const Mesh& m, FirstCorner first_corner)
 {
   Mesh out;
   for(Vertex v : vertices(m))
@@ -616,11 +616,34 @@ Mesh faces_started_anywhere(const Mesh& m)
     std::vector<Vertex> corners;
     for(Vertex v : CGAL::vertices_around_face(halfedge(f, m), m))
       corners.push_back(v);
-    const std::size_t i = std::size_t(f);
-    std::rotate(corners.begin(), corners.begin() + std::ptrdiff_t((3 * i + i / 5) % corners.size()), corners.end());
+    std::rotate(corners.begin(), corners.begin() + std::ptrdiff_t(first_corner(std::size_t(f)) % corners.size()),
+                corners.end());
     out.add_face(corners);
   }
   return out;
+}
+
+// Faces started at corner (3 f + f / 5) mod 4, as some CAD exports write
+// them, so that a strip crosses neighbouring faces through face edges of
+// different parities.
+Mesh faces_started_anywhere(const Mesh& m)
+{
+  return faces_started_at(m, [](std::size_t f) { return 3 * f + f / 5; });
+}
+
+// The strips of `m` as the sets of faces they hold, in either direction.
+std::set<std::set<std::size_t> > strip_sets(const std::array<std::vector<std::size_t>, 2>& strips)
+{
+  std::set<std::set<std::size_t> > result;
+  for(int d = 0; d < 2; ++d)
+  {
+    std::map<std::size_t, std::set<std::size_t> > faces_of;
+    for(std::size_t f = 0; f < strips[d].size(); ++f)
+      faces_of[strips[d][f]].insert(f);
+    for(const auto& strip : faces_of)
+      result.insert(strip.second);
+  }
+  return result;
 }
 
 } // namespace
@@ -648,6 +671,43 @@ TEST(SweepStart, GridWhoseFacesStartAtAnyCornerIsSwept)
   EXPECT_FALSE(swept.empty());
   EXPECT_EQ(Labels(swept.begin(), swept.end()), Labels(horn_swept.begin(), horn_swept.end()));
   expect_tilable_only_through_a_sweep([] { return faces_started_anywhere(growing_horn()); }, 8);
+}
+
+// Only face 0 of the horn started one corner on: all the other faces cross
+// the strips the other way round from it. Face 0's direction stays the
+// reference, since the grid search walks from face 0 along its own face
+// edges: the horn is still its grid of 9 rings by 8 lines, both ways.
+TEST(SweepStart, GridWhoseFirstFaceAloneStartsElsewhereIsAGrid)
+{
+  const Mesh m = faces_started_at(growing_horn(), [](std::size_t f) { return f == 0 ? 1 : 0; });
+  const auto fim = get(CGAL::face_index, m);
+  std::vector<int> expected(num_faces(m), 1);
+  expected[0] = 0;
+  EXPECT_EQ(TSI::strip_direction_flips(m, fim), expected);
+  const auto strips = TSI::quad_strips(m, fim);
+  std::set<std::pair<std::size_t, std::size_t> > shapes;
+  for(int d = 0; d < 2; ++d)
+  {
+    const TSI::Quad_grid grid = TSI::quad_grid(m, fim, get(CGAL::vertex_point, m), strips, d);
+    shapes.insert({grid.rows, grid.columns});
+  }
+  EXPECT_EQ(shapes, (std::set<std::pair<std::size_t, std::size_t> >{{rings, around}, {around, rings}}));
+}
+
+// The strips that the strip candidates group are the rings and lines of the
+// horn, its faces started anywhere or not (faces keep their indices): on a
+// grid the directions are carried across the edges. Each face's own
+// parities would mix rings and lines into other strips.
+TEST(SweepStart, StripCandidatesOfAGridAreItsRingsAndLines)
+{
+  const Mesh horn = growing_horn(), scrambled = faces_started_anywhere(horn);
+  auto candidate_strips = [](const Mesh& m) {
+    return TSI::candidate_strips(m, get(CGAL::face_index, m), get(CGAL::vertex_point, m));
+  };
+  const std::set<std::set<std::size_t> > rings_and_lines = strip_sets(candidate_strips(horn));
+  EXPECT_EQ(rings_and_lines.size(), std::size_t(rings + around));
+  EXPECT_EQ(strip_sets(candidate_strips(scrambled)), rings_and_lines);
+  EXPECT_NE(strip_sets(TSI::quad_strips(scrambled, get(CGAL::face_index, scrambled), false)), rings_and_lines);
 }
 
 // On a cube every vertex has valence 3 and each of its 3 strips crosses the

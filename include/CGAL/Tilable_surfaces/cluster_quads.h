@@ -339,7 +339,8 @@ private:
       add_kmeans_candidate(result);
     if(m_settings.use_strips && m_k > 1)
       for(const std::vector<std::size_t>& label :
-          strip_clusterings(m_pm, m_fim, m_vpm, m_quads, m_descriptors, m_k, m_settings.policy, m_random))
+          strip_clusterings(m_pm, m_fim, m_vpm, m_quads, m_descriptors, m_k, m_settings.policy, m_random,
+                            candidate_strips(m_pm, m_fim, m_vpm)))
         add_best_match_candidate(result, label, Clustering_candidate::QUAD_STRIPS);
     // A quad grid has no triangle.
     if(m_settings.use_segments && m_k > 1 && !m_triangles)

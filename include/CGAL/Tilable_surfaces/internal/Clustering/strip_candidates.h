@@ -102,8 +102,10 @@ int face_edge_parity(typename boost::graph_traits<PolygonMesh>::halfedge_descrip
 // at any corner (a CAD export), this is what lets a grid be seen as one;
 // on an all-quad mesh whose flips disagree somewhere (a strip that meets
 // itself, as around a vertex of odd valence), or with triangles, all 0.
-// Flipped as a whole when more faces would be flipped than not, so that
-// face 0's own corners do not decide it.
+// Face 0 is never flipped: quad_grid() and trimmed_quad_grid() walk from
+// face 0 along its own face edges, and direction d must be the same strips
+// there (a scrambled tunnel whose face 0 was in the minority, flipped by a
+// majority rule, was no grid: results.md, stop 32).
 template <typename PolygonMesh, typename FaceIndexMap>
 std::vector<int> strip_direction_flips(const PolygonMesh& pm, FaceIndexMap fim)
 {
@@ -117,7 +119,6 @@ std::vector<int> strip_direction_flips(const PolygonMesh& pm, FaceIndexMap fim)
     face_of[std::size_t(get(fim, f))] = f;
   }
   std::vector<int> flip(n, -1);
-  std::size_t flipped = 0;
   for(std::size_t start = 0; start < n; ++start)
   {
     if(flip[start] >= 0)
@@ -138,7 +139,6 @@ std::vector<int> strip_direction_flips(const PolygonMesh& pm, FaceIndexMap fim)
         if(flip[gi] < 0)
         {
           flip[gi] = expected;
-          flipped += std::size_t(expected);
           queue.push_back(gi);
         }
         else if(flip[gi] != expected)
@@ -146,9 +146,6 @@ std::vector<int> strip_direction_flips(const PolygonMesh& pm, FaceIndexMap fim)
       }
     }
   }
-  if(2 * flipped > n)
-    for(int& x : flip)
-      x ^= 1;
   return flip;
 }
 
@@ -278,17 +275,14 @@ void bring_to(std::size_t k, const PolygonMesh& pm, FaceIndexMap fim, VertexPoin
 // with the directions swapped. A direction with more than `max_strips`
 // strips (O(S^3) greedy merges) is left out. On a mesh with triangles, the
 // strips and the final clusters are split by kind first (separate_kinds()).
+// `strips` as quad_strips() gives them (see candidate_strips()).
 template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
 std::vector<std::vector<std::size_t> >
 strip_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, const std::vector<Panel>& quads,
                   const std::vector<Quad_descriptor>& descriptors, std::size_t k,
-                  Orientation_policy policy, CGAL::Random& random, std::size_t max_strips = 400)
+                  Orientation_policy policy, CGAL::Random& random,
+                  std::array<std::vector<std::size_t>, 2> strips, std::size_t max_strips = 400)
 {
-  // Each face's strips filed by the parity of its own face edges, as before
-  // the grids carried the directions: carried here too, they change the
-  // candidates of a file whose faces start at any corner, and made
-  // free_negshell_marc_anet's result cross itself (results.md, stop 31).
-  std::array<std::vector<std::size_t>, 2> strips = quad_strips(pm, fim, false);
   const bool triangles = has_triangles(quads);
   std::array<std::size_t, 2> count;
   for(int d = 0; d < 2; ++d)

@@ -631,7 +631,7 @@ Mesh faces_started_anywhere(const Mesh& m)
   return faces_started_at(m, [](std::size_t f) { return 3 * f + f / 5; });
 }
 
-// The strips of `m` as the sets of faces they hold, in either direction.
+// `strips` (both directions) as the sets of faces they hold.
 std::set<std::set<std::size_t> > strip_sets(const std::array<std::vector<std::size_t>, 2>& strips)
 {
   std::set<std::set<std::size_t> > result;

@@ -5,8 +5,8 @@
 //                 [--components EDGES.ply] [--distance-weight W] [--fairness-weight W]
 //                 [--tangential-weight W] [--optimized-candidates N] [--improvement-rounds N]
 //                 [--candidates N] [--solver gauss-newton|paper-cg] [--fixed-boundary]
-//                 [--iterations N] [--seed S] [--threads N] [--mirror] [--planar] [--ascii] [--quiet]
-//                 [--help]
+//                 [--iterations N] [--time-limit SECONDS] [--seed S] [--threads N] [--mirror]
+//                 [--planar] [--ascii] [--quiet] [--help]
 //   k_set_tilable INPUT --sweep KMIN:KMAX[:STEP] --curve CURVE.csv [options]
 //
 // Reads a quad mesh (OFF, OBJ or PLY), makes it K-set tilable, and writes the
@@ -74,6 +74,7 @@ struct Options
   int optimized_candidates = -1; // negative: the package's default
   int improvement_rounds = TS::defaults::number_of_improvement_rounds;
   int candidates = int(TS::defaults::number_of_candidates), iterations = -1, threads = 0;
+  double time_limit = -1; // negative: none
   unsigned int seed = TS::defaults::random_seed;
   std::string solver = "gauss-newton";
   bool fixed_boundary = false, mirror = false, planar = false, ascii = false, quiet = false;
@@ -166,6 +167,10 @@ Options parse(int argc, char** argv, bool& help)
      "gauss-newton (exact, default) or paper-cg (the paper's conjugate gradient)")
     ("fixed-boundary", po::bool_switch(&o.fixed_boundary), "boundary vertices do not move")
     ("iterations", po::value<int>(&o.iterations), "maximum solver iterations")
+    ("time-limit", po::value<double>(&o.time_limit),
+     "seconds from the start after which no solver makes another step: the best result so far is "
+     "kept (a grid's exact sweep at least); clustering and measurement are not interrupted, and the "
+     "result then depends on the machine's speed")
     ("seed", po::value<unsigned int>(&o.seed)->default_value(o.seed), "random seed")
     ("threads", po::value<int>(&o.threads)->default_value(0), "threads (0: all cores)")
     ("mirror", po::bool_switch(&o.mirror),
@@ -245,6 +250,8 @@ Options parse(int argc, char** argv, bool& help)
     throw Usage_error("--iterations must be >= 0");
   if(o.threads < 0)
     throw Usage_error("--threads must be >= 0");
+  if(vm.count("time-limit") && !(o.time_limit >= 0))
+    throw Usage_error("--time-limit must be >= 0");
   if(!(o.distance_weight > 0) || !(o.fairness_weight >= 0 || o.fairness_weight == -1))
     throw Usage_error("--distance-weight must be > 0 and --fairness-weight >= 0");
   if(!(o.tangential_weight > 0 && o.tangential_weight <= 1))
@@ -270,17 +277,23 @@ Mesh read_input(const std::string& path)
   return mesh;
 }
 
-// Progress on stderr: one line per phase, one per solver iteration.
+// Progress on stderr: one line per phase, one per solver iteration; stops
+// the solvers once `clock` passes `time_limit` (none if negative).
 struct Progress_visitor : TS::Default_visitor
 {
   bool quiet = false;
+  double time_limit = -1;
+  const CGAL::Real_timer* clock = nullptr;
+  bool stopped = false; // by the time limit, at least once
   bool iteration(int it, double congruence, double objective)
   {
     if(!quiet)
       std::cerr << "  iteration " << std::setw(3) << it << ": congruence error "
                 << std::scientific << std::setprecision(2) << congruence << ", objective "
                 << objective << std::defaultfloat << "\n";
-    return true;
+    if(time_limit >= 0 && clock->time() > time_limit)
+      stopped = true;
+    return !stopped;
   }
   void phase(const char* name, double seconds)
   {
@@ -377,6 +390,8 @@ int run(const Options& o)
   const Mesh input = mesh;
   Progress_visitor progress;
   progress.quiet = o.quiet;
+  progress.time_limit = o.time_limit;
+  progress.clock = &timer;
   progress.phase("reading", timer.time());
   if(!o.quiet)
     std::cerr << "[k_set_tilable] " << o.input << ": " << mesh.number_of_vertices() << " vertices, "
@@ -408,7 +423,7 @@ int run(const Options& o)
               .orientation_policy(o.mirror ? TS::ALLOW_MIRRORED_PANELS : TS::PROPER_RIGID_MOTIONS)
               .planar_tiles(o.planar)
               .number_of_iterations(o.iterations >= 0 ? o.iterations : TS::default_number_of_iterations(solver))
-              .visitor(progress);
+              .visitor(std::ref(progress));
   if(!o.sweep.empty())
     return write_curve(o, TS::k_set_tilable_curve<CGAL::Parallel_if_available_tag>(mesh, o.sweep_k, np), timer);
   const int largest_k = o.k > 0 ? o.k : int(num_faces(mesh));
@@ -485,8 +500,11 @@ int run(const Options& o)
                             {"solver", o.solver},
                             {"fixed_boundary", o.fixed_boundary},
                             {"iterations", o.iterations},
+                            {"time_limit", o.time_limit >= 0 ? nlohmann::json(o.time_limit)
+                                                             : nlohmann::json(nullptr)},
                             {"seed", o.seed},
                             {"threads", o.threads}};
+    report["time_limit_reached"] = progress.stopped;
     report["time_seconds"]["total_with_io"] = timer.time();
     files.add(o.report, [&](std::ostream& out) {
       out << std::setw(2) << report << "\n";
@@ -547,10 +565,14 @@ int run(const Options& o)
                 << " with iterations left, after " << result.clustering.number_of_edit_rounds
                 << " rounds of split and merge (improvement and repair); more iterations would not help, a larger K may"
                 << (o.max_deviation >= 0 ? "" : " (--max-deviation D searches the smallest K within D)") << "\n";
-    else if(!result.optimization.stopped_by_visitor)
+    else if(!progress.stopped)
       std::cerr << "[k_set_tilable] the solver used all its " << result.optimization.iterations
                 << " iterations: more (--iterations N) may make it tilable\n";
   }
+  if(progress.stopped)
+    std::cerr << "[k_set_tilable] the time limit (" << std::defaultfloat << std::setprecision(6) << o.time_limit
+              << " s) ended the search: the result is the best found by then"
+              << (result.is_tilable() ? "" : "; a longer --time-limit may make it tilable") << "\n";
   if(m.self_intersecting_face_pairs > 0)
     std::cerr << "[k_set_tilable] WARNING: the result crosses itself (" << m.self_intersecting_face_pairs
               << " pairs of panels intersect); it cannot be built as it is: try a larger K\n";

@@ -71,16 +71,18 @@ struct Checked_run
   std::string output;
   nlohmann::json report;
   double worst_misfit = 0; // measured on the PLY, over the mean edge length
+  double largest_move = 0; // of a vertex, PLY against input
 };
 
 void check_run_on(const std::string& surface, int k, const std::string& catalog_ext,
-                  Checked_run* checked = nullptr)
+                  Checked_run* checked = nullptr, const std::string& more_arguments = "")
 {
   const Temp_dir dir("cli_" + std::to_string(k));
   const fs::path ply = dir / "out.ply", report_path = dir / "report.json",
                  catalog_path = dir / ("tiles." + catalog_ext);
   const Run_result r = run(data_dir + "/" + surface + " -k " + std::to_string(k) + " -o " + ply.string() +
-                    " --report " + report_path.string() + " --catalog " + catalog_path.string());
+                    " --report " + report_path.string() + " --catalog " + catalog_path.string() + " " +
+                    more_arguments);
   ASSERT_EQ(r.exit_code, 0) << r.output;
   EXPECT_NE(r.output.find("clustering done"), std::string::npos) << "progress per phase";
   EXPECT_NE(r.output.find("iteration"), std::string::npos) << "progress per iteration";
@@ -136,9 +138,13 @@ void check_run_on(const std::string& surface, int k, const std::string& catalog_
     EXPECT_LE(worst, 2e-6);
   const std::string ending = report["optimization"]["ending"].get<std::string>();
   EXPECT_EQ(ending == "tilable", report["tilable"].get<bool>()) << ending;
-  EXPECT_TRUE(ending == "tilable" || ending == "stalled" || ending == "iteration limit") << ending;
+  EXPECT_TRUE(ending == "tilable" || ending == "stalled" || ending == "iteration limit" ||
+              ending == "stopped by the visitor") << ending;
+  double largest_move = 0;
+  for(auto v : vertices(input))
+    largest_move = (std::max)(largest_move, std::sqrt(CGAL::squared_distance(input.point(v), output.point(v))));
   if(checked != nullptr)
-    *checked = Checked_run{r.output, report, worst};
+    *checked = Checked_run{r.output, report, worst, largest_move};
 
   // The catalog: one tile per cluster, with the report's counts.
   std::vector<std::size_t> catalog_sizes;
@@ -194,6 +200,28 @@ TEST(CommandLine, SaysWhenNoExactSolutionIsNearTheInput)
   EXPECT_LT(checked.report["optimization"]["iterations"].get<int>(), 300);
   EXPECT_GE(checked.report["clustering"]["edit_rounds"].get<int>(), 1);
   EXPECT_NE(checked.output.find("no exact solution near the input"), std::string::npos) << checked.output;
+}
+
+// A time limit passed before the first solver step: no solver moves a vertex,
+// so a mesh with no sweep comes back as it was read (6-sub-lifted, not
+// tilable at K = 7, see above), and a grid keeps its sweep's start, exact by
+// construction (the tunnel, a 24 x 48 grid closed around).
+TEST(CommandLine, TimeLimitKeepsTheBestResultFoundByThen)
+{
+  Checked_run no_sweep, grid;
+  check_run_on("6-sub-lifted.obj", 7, "csv", &no_sweep, "--time-limit 0");
+  EXPECT_TRUE(no_sweep.report["time_limit_reached"].get<bool>());
+  EXPECT_FALSE(no_sweep.report["tilable"].get<bool>());
+  EXPECT_EQ(no_sweep.report["optimization"]["ending"].get<std::string>(), "stopped by the visitor");
+  EXPECT_EQ(no_sweep.largest_move, 0.0);
+  EXPECT_LE(no_sweep.report["fidelity"]["hausdorff"]["max"].get<double>(), 1e-12);
+  EXPECT_NE(no_sweep.output.find("the time limit (0 s) ended the search"), std::string::npos) << no_sweep.output;
+
+  check_run_on("tunnel.off", 10, "csv", &grid, "--time-limit 0");
+  EXPECT_TRUE(grid.report["time_limit_reached"].get<bool>());
+  EXPECT_TRUE(grid.report["tilable"].get<bool>());
+  EXPECT_LE(grid.worst_misfit, 1e-6);
+  EXPECT_GT(grid.largest_move, 0.0) << "the sweep moved the tunnel";
 }
 
 TEST(CommandLine, ObjOutputKeepsTheTilesWithItsMaterialLibrary)
@@ -307,6 +335,7 @@ TEST(CommandLine, BadInputsExitWithCodeTwoAndWriteNothing)
                  "cannot create");
   expect_refused(dir, saddle + out, "give -k K, --max-deviation D or --sweep");
   expect_refused(dir, saddle + " --max-deviation -0.1" + out, "--max-deviation must be >= 0");
+  expect_refused(dir, saddle + " -k 5 --time-limit -1" + out, "--time-limit must be >= 0");
   expect_refused(dir, saddle + " --sweep 5:3 --curve " + (dir / "c.csv").string(), "KMIN:KMAX");
   expect_refused(dir, saddle + " --sweep 1:x --curve " + (dir / "c.csv").string(), "whole numbers");
   expect_refused(dir, saddle + " --sweep 1:3", "--sweep needs --curve");

@@ -141,7 +141,9 @@ Options parse(int argc, char** argv, bool& help)
      "KMIN:KMAX[:STEP]: run every K of the range and write the curve (--curve), no mesh")
     ("curve", po::value<std::string>(&o.curve),
      "CSV of the K tried (--sweep or --max-deviation): K, DOF, congruence, Hausdorff distance, "
-     "displacement, time, tilable, pairs of panels that cross; scripts/plot_curve.sh draws it")
+     "displacement, time, tilable, pairs of panels that cross, the smaller K refined (--sweep: a K "
+     "whose own result ends farther than a smaller K's takes that one refined); scripts/plot_curve.sh "
+     "draws it")
     ("output,o", po::value<std::string>(&o.output),
      "moved mesh: .ply (with face properties cluster, orientation, red/green/blue), "
      ".obj (a group and a material per tile, OUTPUT.mtl beside it) or .off (geometry only)")

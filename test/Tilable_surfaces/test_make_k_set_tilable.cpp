@@ -125,6 +125,37 @@ TEST(KSetTilableSurface, EditingReportsTheDegreeOfFlexibilityOfTheEditedClusteri
             2 * m.congruence_error + 1e-12);
 }
 
+// refine_to() splits an exact result's clusters, every face keeping its
+// orientation: the split clustering is exact where the result is, so the
+// refined result is exact by an independent fit and no farther from the
+// input. Bad K leave the object as it was.
+TEST(KSetTilableSurface, RefiningAnExactResultKeepsItExactAndNoFarther)
+{
+  Mesh mesh = read("monkey_saddle.off");
+  TS::K_set_tilable_surface<CGAL::Parallel_if_available_tag, Mesh> surface(mesh);
+  EXPECT_THROW(surface.refine_to(14), TS::Invalid_input) << "no clustering yet";
+  surface.cluster(TSP::number_of_tiles(13));
+  ASSERT_TRUE(surface.optimize_closest().converged);
+  const double closest = surface.measure().hausdorff_distance;
+
+  const TS::Optimization_result& refined = surface.refine_to(14);
+  EXPECT_EQ(surface.number_of_clusters(), 14u);
+  EXPECT_TRUE(refined.converged);
+  const TS::Tilability_measure m = surface.measure();
+  EXPECT_LE(m.hausdorff_distance, closest + 1e-12);
+  EXPECT_EQ(m.self_intersecting_face_pairs, 0u);
+  EXPECT_LE(congruence_by_umeyama(mesh, surface.face_cluster_map(), surface.face_orientation_map()), 1e-6);
+  std::set<int> ids;
+  for(auto f : faces(mesh)) ids.insert(int(get(surface.face_cluster_map(), f)));
+  EXPECT_EQ(ids.size(), 14u);
+
+  const auto before = points(mesh);
+  EXPECT_THROW(surface.refine_to(13), TS::Invalid_input) << "fewer clusters than now";
+  EXPECT_THROW(surface.refine_to(mesh.number_of_faces() + 1), TS::Invalid_input);
+  EXPECT_EQ(surface.number_of_clusters(), 14u);
+  EXPECT_EQ(points(mesh), before);
+}
+
 TEST(KSetTilableSurface, SetClusteringChecksTheMaps)
 {
   Mesh mesh = read("monkey_saddle.off");

@@ -505,6 +505,48 @@ public:
     return degree_of_flexibility();
   }
 
+  /// Refines the current result to `k` clusters: splits the cluster with
+  /// the most faces (the first such) as `split_cluster()` does until there
+  /// are `k`, every face keeping its orientation, then optimizes from the
+  /// input as `optimize()` does (whose named parameters `np` takes), but
+  /// starting at the current positions when the split clustering is exact
+  /// there (`congruence_tolerance`; default solver, without
+  /// `planar_tiles`), and keeping them when the solve does not end better
+  /// (tilable before not, then not crossing itself, then closer to the
+  /// input). Both parts of a split cluster are instances of its S-quad, so
+  /// an exact result stays exact: the refined result is at least as good as
+  /// the one refined, with `k` S-quads. `k_set_tilable_curve()` uses it so
+  /// that more molds never end farther than fewer.
+  /// \throws Invalid_input if there is no clustering yet, or `k` is less
+  /// than the number of clusters or more than the number of faces; nothing
+  /// changes then.
+  template <typename CGAL_NP_TEMPLATE_PARAMETERS>
+  const Optimization_result& refine_to(std::size_t k, const CGAL_NP_CLASS& np = parameters::default_values())
+  {
+    require_clustering();
+    if(k < number_of_clusters() || k > num_faces(m_mesh))
+      throw Invalid_input("cannot refine " + std::to_string(number_of_clusters()) + " clusters to K = " +
+                            std::to_string(k) + " (the mesh has " + std::to_string(num_faces(m_mesh)) + " faces)",
+                          Invalid_input::PARAMETER);
+    const internal::Point_matrix start = internal::read_points(m_mesh, m_vpm, m_vim);
+    // Each face keeps the orientation it fits its S-quad by here; a split
+    // re-tags on the input quads, which may pick another symmetry.
+    const auto orientation = m_clustering_model.orientation;
+    while(number_of_clusters() < k)
+    {
+      const std::vector<std::size_t> size = m_clustering_model.cluster_sizes();
+      split_cluster(std::size_t(std::max_element(size.begin(), size.end()) - size.begin()));
+    }
+    m_clustering_model.orientation = orientation;
+    m_graph.reset();
+    publish_clustering_model();
+    restore_input();
+    m_optimization = with_concurrency([&] {
+      return internal::optimize_tilable_surface(internal::Validated_mesh(true), m_mesh, with_own_maps(np), &start);
+    });
+    return m_optimization;
+  }
+
   /// Re-tags every face with the orientation that best matches its cluster's
   /// S-quad, as `Tilable_surfaces::retag_orientations()` does with the
   /// clustering's similarity threshold, judged on the input quads; returns

@@ -21,19 +21,21 @@ namespace IO {
 
 /// \ingroup PkgTilableSurfacesRef
 /// Writes one row per trial, in the given order, under the header line
-/// `K,DOF,congruence_error,hausdorff_distance,max_displacement,seconds,tilable,crossing_face_pairs`:
+/// `K,DOF,congruence_error,hausdorff_distance,max_displacement,seconds,tilable,crossing_face_pairs,refined_from`:
 /// the congruence error relative to the result's mean edge length, the
 /// symmetric Hausdorff distance relative to the input's bounding-box
-/// diagonal, the displacement in mesh units, `tilable` 1 or 0, and the pairs
-/// of panels of the result that cross each other.
+/// diagonal, the displacement in mesh units, `tilable` 1 or 0, the pairs
+/// of panels of the result that cross each other, and the smaller K whose
+/// refined result this is (`Tile_count_trial::refined_from`, 0 if none).
 inline bool write_tile_count_curve_CSV(std::ostream& os, const std::vector<Tile_count_trial>& trials)
 {
-  os << "K,DOF,congruence_error,hausdorff_distance,max_displacement,seconds,tilable,crossing_face_pairs\n";
+  os << "K,DOF,congruence_error,hausdorff_distance,max_displacement,seconds,tilable,crossing_face_pairs,"
+        "refined_from\n";
   os << std::setprecision(std::numeric_limits<double>::max_digits10);
   for(const Tile_count_trial& t : trials)
     os << t.number_of_tiles << ',' << t.degree_of_flexibility << ',' << t.congruence_error << ','
        << t.hausdorff_distance << ',' << t.max_displacement << ',' << t.seconds << ','
-       << (t.is_tilable ? 1 : 0) << ',' << t.self_intersecting_face_pairs << '\n';
+       << (t.is_tilable ? 1 : 0) << ',' << t.self_intersecting_face_pairs << ',' << t.refined_from << '\n';
   return bool(os);
 }
 

@@ -529,17 +529,24 @@ public:
                             std::to_string(k) + " (the mesh has " + std::to_string(num_faces(m_mesh)) + " faces)",
                           Invalid_input::PARAMETER);
     const internal::Point_matrix start = internal::read_points(m_mesh, m_vpm, m_vim);
+    // The splits of split_cluster() on a copy of the model, published once:
+    // the edge-sharing graph split_cluster() rebuilds for its DOF is not
+    // needed between them.
+    internal::Face_clustering model = m_clustering_model;
+    with_concurrency([&] {
+      while(model.number_of_clusters < k)
+      {
+        const std::vector<std::size_t> size = model.cluster_sizes();
+        CGAL::Random random(defaults::random_seed);
+        internal::split_cluster(model, m_faces.quads,
+                                std::size_t(std::max_element(size.begin(), size.end()) - size.begin()), m_policy,
+                                random);
+      }
+    });
     // Each face keeps the orientation it fits its S-quad by here; a split
     // re-tags on the input quads, which may pick another symmetry.
-    const auto orientation = m_clustering_model.orientation;
-    while(number_of_clusters() < k)
-    {
-      const std::vector<std::size_t> size = m_clustering_model.cluster_sizes();
-      split_cluster(std::size_t(std::max_element(size.begin(), size.end()) - size.begin()));
-    }
-    m_clustering_model.orientation = orientation;
-    m_graph.reset();
-    publish_clustering_model();
+    model.orientation = m_clustering_model.orientation;
+    set_clustering_model(std::move(model));
     restore_input();
     m_optimization = with_concurrency([&] {
       return internal::optimize_tilable_surface(internal::Validated_mesh(true), m_mesh, with_own_maps(np), &start);

@@ -363,7 +363,8 @@ int write_curve(const Options& o, const std::vector<TS::Tile_count_trial>& trial
               << t.degree_of_flexibility << std::scientific << std::setprecision(2) << std::setw(12)
               << t.congruence_error << std::fixed << std::setw(10) << 100 * t.hausdorff_distance
               << "%" << std::scientific << std::setw(14) << t.max_displacement << std::fixed
-              << std::setw(9) << t.seconds << (t.is_tilable ? "" : "  not tilable") << "\n";
+              << std::setw(9) << t.seconds << (t.is_tilable ? "" : "  not tilable")
+              << (t.refined_from > 0 ? "  refined from K = " + std::to_string(t.refined_from) : "") << "\n";
   std::cerr << "[k_set_tilable] curve written to " << o.curve << " in " << std::fixed
             << std::setprecision(2) << timer.time() << " s\n";
   return 0;
@@ -528,8 +529,13 @@ int run(const Options& o)
   {
     std::cerr << "[k_set_tilable] K tried:";
     for(const TS::Tile_count_trial& t : result.trials)
+    {
       std::cerr << " " << t.number_of_tiles << (t.meets(o.max_deviation) ? " (within," : " (missed,")
-                << std::defaultfloat << std::setprecision(3) << " " << 100 * t.hausdorff_distance << "%)";
+                << std::defaultfloat << std::setprecision(3) << " " << 100 * t.hausdorff_distance << "%";
+      if(t.refined_from > 0)
+        std::cerr << ", refined from K = " << t.refined_from;
+      std::cerr << ")";
+    }
     const bool met = !result.trials.empty() && std::any_of(result.trials.begin(), result.trials.end(),
       [&](const TS::Tile_count_trial& t) { return t.meets(o.max_deviation); });
     std::cerr << "\n[k_set_tilable] " << (met ? "smallest K within the budget: "

@@ -231,16 +231,22 @@ TEST(Triangles, OneTileIsRefusedWhenTheMeshHasQuadsAndTriangles)
   Mesh mesh = house(Vector3d(0.15, -0.1, 0.2));
   const Mesh before = mesh;
   Clustering c = add_clustering_maps(mesh);
-  try
-  {
-    TS::make_k_set_tilable(mesh, TS::parameters::number_of_tiles(1).face_cluster_map(c.cluster)
-                                   .face_orientation_map(c.orientation));
-    ADD_FAILURE() << "one tile for quads and triangles";
-  }
-  catch(const TS::Invalid_input& e)
-  {
-    EXPECT_EQ(e.element(), TS::Invalid_input::PARAMETER);
-    EXPECT_NE(std::string(e.what()).find("at least 2 tiles"), std::string::npos) << e.what();
-  }
-  for(auto v : vertices(mesh)) EXPECT_EQ(mesh.point(v), before.point(v));
+  auto expect_refused = [&](auto run, const char* what) {
+    try
+    {
+      run();
+      ADD_FAILURE() << "one tile for quads and triangles, " << what;
+    }
+    catch(const TS::Invalid_input& e)
+    {
+      EXPECT_EQ(e.element(), TS::Invalid_input::PARAMETER);
+      EXPECT_NE(std::string(e.what()).find("at least 2 tiles"), std::string::npos) << e.what();
+    }
+    for(auto v : vertices(mesh)) EXPECT_EQ(mesh.point(v), before.point(v));
+  };
+  const auto maps = TS::parameters::face_cluster_map(c.cluster).face_orientation_map(c.orientation);
+  expect_refused([&] { TS::make_k_set_tilable(mesh, maps.number_of_tiles(1)); }, "K = 1");
+  // A deviation search whose largest K is 1 has no K to try.
+  expect_refused([&] { TS::make_k_set_tilable(mesh, maps.number_of_tiles(1).max_deviation(0.5)); },
+                 "the largest K of a deviation search");
 }

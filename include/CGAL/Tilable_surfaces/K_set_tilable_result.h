@@ -37,8 +37,8 @@ struct Tile_count_trial
   std::size_t self_intersecting_face_pairs = 0;
   /// The smaller K whose result, refined to this K
   /// (`K_set_tilable_surface::refine_to()`), ended better than this K's own
-  /// search and is the result here (`k_set_tilable_curve()`); 0 when it is
-  /// this K's own.
+  /// search and is the result here (`k_set_tilable_curve()`, the deviation
+  /// search of `make_k_set_tilable()`); 0 when it is this K's own.
   std::size_t refined_from = 0;
   /// Whether this K is tilable within the deviation budget `max_deviation`,
   /// by a result that does not cross itself (it could not be built).

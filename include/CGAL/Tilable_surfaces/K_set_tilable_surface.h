@@ -211,6 +211,10 @@ public:
     m_is_clustered = true;
     set_clustering_model(std::move(clustering));
   }
+  /// The orientation policy under which the instances of the current
+  /// clustering match their S-quads (`cluster()`'s or `set_clustering()`'s).
+  Orientation_policy orientation_policy() const { return m_policy; }
+
   /// Whether a clustering exists (`cluster()` or `set_clustering()`).
   bool is_clustered() const { return m_is_clustered; }
 
@@ -222,7 +226,7 @@ public:
   /// `optimize_closest()`, the same description of the clustering now in the
   /// maps (S-quads and sizes, DOF, weights: exact if `cluster()` took the
   /// exact path, else estimated), with the candidate pool of the last
-  /// `cluster()` (none after `set_clustering()`).
+  /// `cluster()` (none after `set_clustering()` or `refine_to()`).
   const Clustering_result& clustering() const
   {
     if(m_summary_is_stale)
@@ -507,16 +511,19 @@ public:
 
   /// Refines the current result to `k` clusters: splits the cluster with
   /// the most faces (the first such) as `split_cluster()` does until there
-  /// are `k`, every face keeping its orientation, then optimizes from the
-  /// input as `optimize()` does (whose named parameters `np` takes), but
-  /// starting at the current positions when the split clustering is exact
-  /// there (`congruence_tolerance`; default solver, without
-  /// `planar_tiles`), and keeping them when the solve does not end better
-  /// (tilable before not, then not crossing itself, then closer to the
-  /// input). Both parts of a split cluster are instances of its S-quad, so
-  /// an exact result stays exact: the refined result is at least as good as
-  /// the one refined, with `k` S-quads. `k_set_tilable_curve()` uses it so
-  /// that more molds never end farther than fewer.
+  /// are `k`, then optimizes it two ways and keeps the better (tilable before
+  /// not, then not crossing itself, then closer to the input): every face
+  /// keeping the orientation it has now, from the current positions when
+  /// they are exact (`congruence_tolerance`; default solver, without
+  /// `planar_tiles`) and keeping them when the solve does not end better;
+  /// and with the orientations the splits chose on the input quads, from
+  /// the input as `optimize()` does. `np` takes the named parameters of
+  /// `optimize()`. Both parts of a split cluster are instances of its
+  /// S-quad, so an exact result stays exact: the refined result is at least
+  /// as good as the one refined, and as the split clustering optimized from
+  /// the input, with `k` S-quads. `k_set_tilable_curve()` and the deviation
+  /// search of `make_k_set_tilable()` use it so that more molds do not end
+  /// farther than fewer.
   /// \throws Invalid_input if there is no clustering yet, or `k` is less
   /// than the number of clusters or more than the number of faces; nothing
   /// changes then.
@@ -528,29 +535,47 @@ public:
       throw Invalid_input("cannot refine " + std::to_string(number_of_clusters()) + " clusters to K = " +
                             std::to_string(k) + " (the mesh has " + std::to_string(num_faces(m_mesh)) + " faces)",
                           Invalid_input::PARAMETER);
+    const std::size_t refined_k = number_of_clusters();
     const internal::Point_matrix start = internal::read_points(m_mesh, m_vpm, m_vim);
-    // The splits of split_cluster() on a copy of the model, published once:
-    // the edge-sharing graph split_cluster() rebuilds for its DOF is not
-    // needed between them.
-    internal::Face_clustering model = m_clustering_model;
+    // The splits of split_cluster() on a copy of the model: the edge-sharing
+    // graph split_cluster() rebuilds for its DOF is not needed between them.
+    internal::Face_clustering retagged = m_clustering_model;
     with_concurrency([&] {
-      while(model.number_of_clusters < k)
+      while(retagged.number_of_clusters < k)
       {
-        const std::vector<std::size_t> size = model.cluster_sizes();
+        const std::vector<std::size_t> size = retagged.cluster_sizes();
         CGAL::Random random(defaults::random_seed);
-        internal::split_cluster(model, m_faces.quads,
+        internal::split_cluster(retagged, m_faces.quads,
                                 std::size_t(std::max_element(size.begin(), size.end()) - size.begin()), m_policy,
                                 random);
       }
     });
-    // Each face keeps the orientation it fits its S-quad by here; a split
-    // re-tags on the input quads, which may pick another symmetry.
-    model.orientation = m_clustering_model.orientation;
-    set_clustering_model(std::move(model));
-    restore_input();
-    m_optimization = with_concurrency([&] {
-      return internal::optimize_tilable_surface(internal::Validated_mesh(true), m_mesh, with_own_maps(np), &start);
+    // The splits re-tag on the input quads and may pick another symmetry of
+    // an S-quad: the current positions are then no longer exact, and the
+    // solve from the input sometimes ends closer (De Beers 28 -> 30: 1.35%
+    // against 1.62% of the diagonal with the orientations kept).
+    internal::Face_clustering kept = retagged;
+    kept.orientation = m_clustering_model.orientation;
+    const std::size_t ways = kept.orientation == retagged.orientation ? 1 : 2;
+    auto&& visitor = internal::visitor_of(np);
+    std::mutex mutex;
+    Locked_visitor<std::remove_reference_t<decltype(visitor)> > locked{&visitor, &mutex};
+    const auto solve_np = internal::with_visitor(np, locked);
+    std::vector<State> solved(ways);
+    with_concurrency([&] {
+      internal::parallel_for(ways, [&](std::size_t j) {
+        solved[j] = j == 0 ? solved_model(kept, solve_np, &start) : solved_model(retagged, solve_np, nullptr);
+      });
     });
+    const bool retagged_wins = ways == 2 && internal::is_better(solved[1].optimization, solved[0].optimization);
+    set_state(solved[retagged_wins ? 1 : 0]);
+    m_clustering = Clustering_result();
+    m_clustering.weights_are_exact = false;
+    m_clustering.choice_reason = "the result at K = " + std::to_string(refined_k) +
+                                 ", its largest clusters split to K = " + std::to_string(k) + ", solved " +
+                                 (retagged_wins ? "from the input with the orientations the splits chose"
+                                                : "from there with every face's orientation kept") +
+                                 " (refine_to())";
     return m_optimization;
   }
 
@@ -764,18 +789,26 @@ private:
   template <typename NP>
   State solved_candidate(std::size_t i, const NP& np) const
   {
-    State solved;
     std::size_t unused_dof;
-    solved.clustering = candidate_model(i, unused_dof);
+    internal::Face_clustering model = candidate_model(i, unused_dof);
     internal::Point_matrix start;
     if(m_clustering.candidates[i].origin == Clustering_candidate::GRID_SWEEPS)
-      start = swept_start(solved.clustering);
+      start = swept_start(model);
+    return solved_model(std::move(model), np, start.rows() > 0 ? &start : nullptr);
+  }
+
+  // The solve of clustering `model` from the input on a copy of the points,
+  // from `start` when it is not null and `model` is exact there.
+  template <typename NP>
+  State solved_model(internal::Face_clustering model, const NP& np, const internal::Point_matrix* start) const
+  {
+    State solved;
+    solved.clustering = std::move(model);
     Model_maps maps(solved.clustering);
     solved.points = m_input_points;
     const Point_storage_map points(solved.points.begin(), m_vim);
     solved.optimization = internal::optimize_tilable_surface(internal::Validated_mesh(true), m_mesh,
-                                                             with_model_maps(np, points, maps),
-                                                             start.rows() > 0 ? &start : nullptr);
+                                                             with_model_maps(np, points, maps), start);
     return solved;
   }
 

@@ -10,7 +10,6 @@
 
 #include <CGAL/Tilable_surfaces/make_k_set_tilable.h>
 
-#include <CGAL/Real_timer.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <cstddef>
@@ -26,11 +25,11 @@ namespace Tilable_surfaces {
 /// each K gave: DOF, congruence, Hausdorff distance to the input,
 /// displacement and time. `pm` keeps its input positions.
 ///
-/// More molds never end farther than fewer: when the best result so far
-/// (tilable and not crossing itself, then closest to the input) was found
-/// at a smaller K and is better than a K's own, it is refined to that K
+/// More molds never end farther than fewer: when the best result of fewer
+/// clusters so far (tilable and not crossing itself, then closest to the
+/// input) is better than a K's own, it is refined to that K
 /// (`K_set_tilable_surface::refine_to()`: its largest clusters split, an
-/// exact result stays exact, then solved closer to the input from there),
+/// exact result stays exact, then solved closer to the input),
 /// and the better of the two is that K's result
 /// (`Tile_count_trial::refined_from`). Measured: the monkey saddle at K = 14
 /// to 21 gave 22.9% to 31.6% of the diagonal on its own, and K = 13 5.1%.
@@ -63,61 +62,16 @@ std::vector<Tile_count_trial> k_set_tilable_curve(PolygonMesh& pm,
                                                 get_property_map(CGAL::vertex_point, pm));
   K_set_tilable_surface<ConcurrencyTag, PolygonMesh, Vertex_point_map> surface(pm, vpm);
 
-  const Orientation_policy policy =
-    choose_parameter(get_parameter(np, internal_np::orientation_policy), defaults::orientation_policy);
+  typedef typename boost::property_traits<Vertex_point_map>::value_type Point;
   const auto fim = CGAL::get_initialized_face_index_map(pm);
-  // The closest tilable result that does not cross itself so far.
-  struct Closest
-  {
-    std::size_t k = 0;
-    std::vector<typename boost::property_traits<Vertex_point_map>::value_type> points;
-    std::vector<int> cluster, orientation;
-    Optimization_result optimization;
-  };
-  Closest closest;
-
+  internal::Refinement_sources<Point> sources;
   std::vector<Tile_count_trial> trials;
   for(std::size_t k : tile_counts)
   {
-    CGAL::Real_timer timer;
-    timer.start();
-    K_set_tilable_result r;
-    internal::cluster_and_optimize(surface, parameters::extend(np).number_of_tiles(int(k)), visitor, r);
-    bool stopped = r.optimization.stopped_by_visitor;
-    std::size_t refined_from = 0;
-    if(!stopped && closest.k > 0 && closest.k < k && internal::is_better(closest.optimization, r.optimization))
-    {
-      auto point = closest.points.begin();
-      for(auto v : vertices(pm)) put(vpm, v, *point++);
-      surface.set_clustering(boost::make_iterator_property_map(closest.cluster.begin(), fim),
-                             boost::make_iterator_property_map(closest.orientation.begin(), fim), policy);
-      const Optimization_result& refined = surface.refine_to(k, internal::with_visitor(np, visitor));
-      stopped = refined.stopped_by_visitor;
-      if(internal::is_better(refined, r.optimization))
-      {
-        r.optimization = refined;
-        refined_from = closest.k;
-      }
-    }
-    trials.push_back(internal::tile_count_trial(r, timer.time()));
-    trials.back().refined_from = refined_from;
-    // The mesh holds r's positions unless a refinement lost (then r is
-    // not better than the closest anyway).
-    if(r.is_tilable() && r.optimization.measure.self_intersecting_face_pairs == 0 &&
-       (closest.k == 0 || internal::is_better(r.optimization, closest.optimization)))
-    {
-      closest.k = k;
-      closest.points.clear();
-      for(auto v : vertices(pm)) closest.points.push_back(get(vpm, v));
-      closest.cluster.resize(num_faces(pm));
-      closest.orientation.resize(num_faces(pm));
-      for(auto f : faces(pm))
-      {
-        closest.cluster[get(fim, f)] = get(surface.face_cluster_map(), f);
-        closest.orientation[get(fim, f)] = get(surface.face_orientation_map(), f);
-      }
-      closest.optimization = r.optimization;
-    }
+    bool stopped = false;
+    const internal::Kept_result<Point> r = internal::result_at(k, surface, pm, vpm, fim, sources, np, visitor, stopped);
+    trials.push_back(r.trial);
+    sources.offer(r);
     if(stopped)
       break;
   }

@@ -10,6 +10,7 @@
 
 #include <CGAL/Tilable_surfaces/K_set_tilable_result.h>
 #include <CGAL/Tilable_surfaces/K_set_tilable_surface.h>
+#include <CGAL/Tilable_surfaces/internal/Search/kept_results.h>
 #include <CGAL/Tilable_surfaces/internal/Search/smallest_passing_tile_count.h>
 
 #include <CGAL/Real_timer.h>
@@ -18,6 +19,7 @@
 #include <boost/property_map/property_map.hpp>
 
 #include <algorithm>
+#include <optional>
 #include <vector>
 
 namespace CGAL {
@@ -75,10 +77,53 @@ inline Tile_count_trial tile_count_trial(const K_set_tilable_result& r, double s
   return t;
 }
 
+// The pipeline at K (`surface` holds the result), then, if `sources` has a
+// better result of fewer clusters, that result refined to K
+// (K_set_tilable_surface::refine_to()) when it ends better still: the
+// result of K, set aside with its trial. `stopped` tells whether the
+// visitor stopped a solve.
+template <typename Surface, typename PolygonMesh, typename VertexPointMap, typename FaceIndexMap, typename Point,
+          typename NamedParameters, typename Visitor>
+Kept_result<Point> result_at(std::size_t k, Surface& surface, PolygonMesh& pm, VertexPointMap vpm,
+                             FaceIndexMap fim, const Refinement_sources<Point>& sources,
+                             const NamedParameters& np, Visitor& visitor, bool& stopped)
+{
+  CGAL::Real_timer timer;
+  timer.start();
+  Kept_result<Point> kept;
+  kept.k = k;
+  cluster_and_optimize(surface, parameters::extend(np).number_of_tiles(int(k)), visitor, kept.result);
+  kept.save(pm, vpm, surface, fim);
+  stopped = kept.result.optimization.stopped_by_visitor;
+  const Kept_result<Point>* source = sources.best_below(k);
+  if(!stopped && source != nullptr && is_better(source->result.optimization, kept.result.optimization))
+  {
+    source->put_points(pm, vpm);
+    surface.set_clustering(source->cluster_map(fim), source->orientation_map(fim), surface.orientation_policy());
+    const Optimization_result& refined = surface.refine_to(k, with_visitor(np, visitor));
+    stopped = refined.stopped_by_visitor;
+    if(is_better(refined, kept.result.optimization))
+    {
+      kept.result.optimization = refined;
+      kept.result.clustering = surface.clustering();
+      kept.result.tiles = tile_catalog(refined.measure);
+      kept.save(pm, vpm, surface, fim);
+      kept.trial.refined_from = source->k;
+    }
+  }
+  const std::size_t refined_from = kept.trial.refined_from;
+  kept.trial = tile_count_trial(kept.result, timer.time());
+  kept.trial.refined_from = refined_from;
+  return kept;
+}
+
 // The deviation search of make_k_set_tilable(): the smallest K, at most the
 // `number_of_tiles` of `np` (default: the number of faces), whose result is
 // tilable within `max_deviation`; else the result at the largest K tried.
-// The mesh and the output maps get the result returned.
+// Each K's result is refined from the best of fewer clusters tried when that
+// is better (result_at()), so that the deviation falls with K as the
+// gallop and bisection assume. The mesh and the output maps get the result
+// returned.
 template <typename PolygonMesh, typename Surface, typename VertexPointMap,
           typename NamedParameters, typename Visitor>
 K_set_tilable_result search_tile_count(PolygonMesh& pm, Surface& surface, VertexPointMap vpm,
@@ -86,6 +131,7 @@ K_set_tilable_result search_tile_count(PolygonMesh& pm, Surface& surface, Vertex
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
+  typedef typename boost::property_traits<VertexPointMap>::value_type Point;
   const double budget = get_parameter(np, internal_np::max_deviation);
   if(!(budget >= 0))
     throw Invalid_input("max_deviation is " + std::to_string(budget) + ", it must be >= 0",
@@ -98,49 +144,38 @@ K_set_tilable_result search_tile_count(PolygonMesh& pm, Surface& surface, Vertex
   const std::size_t k_max = (std::min)(n, std::size_t(largest));
 
   // The smallest K that meets the budget; until one does, the largest K.
-  K_set_tilable_result kept;
+  std::optional<Kept_result<Point> > kept;
   bool kept_meets = false;
-  std::vector<typename boost::property_traits<VertexPointMap>::value_type> kept_points;
-  std::vector<int> kept_cluster(n), kept_orientation(n);
+  Refinement_sources<Point> sources;
   const auto fim = CGAL::get_initialized_face_index_map(pm);
   std::vector<Tile_count_trial> trials;
   bool stopped = false;
   auto passes = [&](std::size_t k) {
     if(stopped)
       return false; // the visitor ended the search: nothing more is tried
-    CGAL::Real_timer timer;
-    timer.start();
-    K_set_tilable_result r;
-    cluster_and_optimize(surface, parameters::extend(np).number_of_tiles(int(k)), visitor, r);
-    trials.push_back(tile_count_trial(r, timer.time()));
-    stopped = r.optimization.stopped_by_visitor;
-    const bool meets = trials.back().meets(budget);
-    const std::size_t kept_k = kept_points.empty() ? 0 : kept.optimization.measure.number_of_clusters;
-    if(kept_points.empty() || (meets && (!kept_meets || k < kept_k)) || (!meets && !kept_meets && k > kept_k))
+    Kept_result<Point> r = result_at(k, surface, pm, vpm, fim, sources, np, visitor, stopped);
+    trials.push_back(r.trial);
+    sources.offer(r);
+    const bool meets = r.trial.meets(budget);
+    if(!kept || (meets && (!kept_meets || k < kept->k)) || (!meets && !kept_meets && k > kept->k))
     {
-      kept = r;
+      kept = std::move(r);
       kept_meets = meets;
-      kept_points.clear();
-      for(auto v : vertices(pm)) kept_points.push_back(get(vpm, v));
-      for(auto f : faces(pm))
-      {
-        kept_cluster[get(fim, f)] = get(surface.face_cluster_map(), f);
-        kept_orientation[get(fim, f)] = get(surface.face_orientation_map(), f);
-      }
     }
     return meets;
   };
-  smallest_passing_tile_count((std::max)(std::size_t(2), n / 25), number_of_panel_kinds(face_quads(pm, fim, np)),
-                              k_max, passes);
+  const std::size_t k_min = number_of_panel_kinds(face_quads(pm, fim, np));
+  if(k_max < k_min)
+    throw Invalid_input("number_of_tiles (the largest K tried) is " + std::to_string(largest) +
+                          ": a mesh of quads and triangles needs at least 2 tiles", Invalid_input::PARAMETER);
+  smallest_passing_tile_count((std::max)(std::size_t(2), n / 25), k_min, k_max, passes);
 
-  auto point = kept_points.begin();
-  for(auto v : vertices(pm)) put(vpm, v, *point++);
-  copy_face_output(pm, get_parameter(np, internal_np::face_cluster),
-                   boost::make_iterator_property_map(kept_cluster.begin(), fim));
-  copy_face_output(pm, get_parameter(np, internal_np::face_orientation),
-                   boost::make_iterator_property_map(kept_orientation.begin(), fim));
-  kept.trials = trials;
-  return kept;
+  kept->put_points(pm, vpm);
+  copy_face_output(pm, get_parameter(np, internal_np::face_cluster), kept->cluster_map(fim));
+  copy_face_output(pm, get_parameter(np, internal_np::face_orientation), kept->orientation_map(fim));
+  K_set_tilable_result result = std::move(kept->result);
+  result.trials = trials;
+  return result;
 }
 
 } // namespace internal
@@ -167,7 +202,9 @@ K_set_tilable_result search_tile_count(PolygonMesh& pm, Surface& surface, Vertex
 ///     cross itself (`Tilability_measure::self_intersecting_face_pairs`): galloped
 ///     from max(2, faces / 25) by halving or doubling, then bisected, each
 ///     K run once through the whole pipeline on the object validated once
-///     (`K_set_tilable_result::trials`). The K returned met the budget and
+///     (`K_set_tilable_result::trials`), and refined from the best result
+///     of fewer clusters tried when that is better, as in
+///     `k_set_tilable_curve()`. The K returned met the budget and
 ///     K - 1 was tried and missed it (or K = 1); a smaller K may still meet
 ///     it where the deviation is not monotone in K. If no K up to the
 ///     largest does, the result is that of the largest K tried. A visitor

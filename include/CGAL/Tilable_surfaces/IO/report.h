@@ -41,7 +41,8 @@ inline nlohmann::json tile_count_trials_json(const std::vector<Tile_count_trial>
                     {"max_displacement", t.max_displacement},
                     {"seconds", t.seconds},
                     {"tilable", t.is_tilable},
-                    {"self_intersecting_face_pairs", t.self_intersecting_face_pairs}});
+                    {"self_intersecting_face_pairs", t.self_intersecting_face_pairs},
+                    {"refined_from", t.refined_from}});
   return rows;
 }
 

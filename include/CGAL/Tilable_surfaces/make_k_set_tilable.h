@@ -95,6 +95,7 @@ Kept_result<Point> result_at(std::size_t k, Surface& surface, PolygonMesh& pm, V
   cluster_and_optimize(surface, parameters::extend(np).number_of_tiles(int(k)), visitor, kept.result);
   kept.save(pm, vpm, surface, fim);
   stopped = kept.result.optimization.stopped_by_visitor;
+  std::size_t refined_from = 0;
   const Kept_result<Point>* source = sources.best_below(k);
   if(!stopped && source != nullptr && is_better(source->result.optimization, kept.result.optimization))
   {
@@ -108,10 +109,9 @@ Kept_result<Point> result_at(std::size_t k, Surface& surface, PolygonMesh& pm, V
       kept.result.clustering = surface.clustering();
       kept.result.tiles = tile_catalog(refined.measure);
       kept.save(pm, vpm, surface, fim);
-      kept.trial.refined_from = source->k;
+      refined_from = source->k;
     }
   }
-  const std::size_t refined_from = kept.trial.refined_from;
   kept.trial = tile_count_trial(kept.result, timer.time());
   kept.trial.refined_from = refined_from;
   return kept;

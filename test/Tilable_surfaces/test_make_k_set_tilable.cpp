@@ -199,6 +199,21 @@ TEST(KSetTilableSurface, RefiningIsNoFartherThanTheSplitClusteringSolvedFromTheI
   EXPECT_LE(congruence_by_umeyama(mesh, surface.face_cluster_map(), surface.face_orientation_map()), 1e-6);
 }
 
+// orientation_policy() is the policy of the clustering now: cluster()'s
+// named parameter, then set_clustering()'s argument.
+TEST(KSetTilableSurface, OrientationPolicyIsTheCurrentClusterings)
+{
+  Mesh mesh = read("monkey_saddle.off");
+  TS::K_set_tilable_surface surface(mesh);
+  surface.cluster(TSP::number_of_tiles(4).orientation_policy(TS::NO_TURNED_OVER_PANELS));
+  EXPECT_EQ(surface.orientation_policy(), TS::NO_TURNED_OVER_PANELS);
+  std::map<Mesh::Face_index, int> cluster, orientation;
+  for(auto f : faces(mesh)) { cluster[f] = 0; orientation[f] = 0; }
+  surface.set_clustering(boost::make_assoc_property_map(cluster), boost::make_assoc_property_map(orientation),
+                         TS::ALLOW_MIRRORED_PANELS);
+  EXPECT_EQ(surface.orientation_policy(), TS::ALLOW_MIRRORED_PANELS);
+}
+
 TEST(KSetTilableSurface, SetClusteringChecksTheMaps)
 {
   Mesh mesh = read("monkey_saddle.off");

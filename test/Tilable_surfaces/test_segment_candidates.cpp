@@ -162,3 +162,88 @@ TEST(SegmentCandidates, OneMergeSequenceServesEveryCount)
       << targets[t] << " clusters";
   }
 }
+
+namespace {
+
+// Every segment partition, for every count up to k, of every grid and set
+// of segment options of `m`, each computed alone.
+std::vector<std::vector<std::size_t> > every_segment_partition(const Mesh& m, std::size_t k)
+{
+  std::vector<std::vector<std::size_t> > result;
+  for(const auto& s : TSI::segment_options(m, get(CGAL::face_index, m), get(CGAL::vertex_point, m), k,
+                                           TS::PROPER_RIGID_MOTIONS, 400, 400))
+    for(const auto& set : s->sets)
+      for(std::size_t count = 1; count <= k; ++count)
+      {
+        std::vector<std::size_t> label = TSI::best_runs(s->grid, set, count);
+        if(!label.empty()) result.push_back(label);
+      }
+  return result;
+}
+
+// Whether every cluster of `fine` lies within one cluster of `coarse`.
+bool refines(const std::vector<std::size_t>& fine, const std::vector<std::size_t>& coarse)
+{
+  std::vector<std::size_t> within(fine.size(), TSI::no_index());
+  for(std::size_t f = 0; f < fine.size(); ++f)
+  {
+    if(within[fine[f]] == TSI::no_index()) within[fine[f]] = coarse[f];
+    if(within[fine[f]] != coarse[f]) return false;
+  }
+  return true;
+}
+
+} // namespace
+
+// One dynamic program for K molds gives, for every smaller count, the
+// partition the dynamic program for that count alone gives: the states of
+// fewer molds are reached by the same steps. A horn, so that the runs
+// differ from count to count.
+TEST(SegmentCandidates, OneDynamicProgramServesEveryCount)
+{
+  const Mesh m = horn<Mesh>(12, 8, 2.0, 2.6, [](int i) { return 0.4 * std::exp(0.08 * i); });
+  const std::size_t k = 30;
+  std::size_t compared = 0;
+  for(const auto& s : TSI::segment_options(m, get(CGAL::face_index, m), get(CGAL::vertex_point, m), k,
+                                           TS::PROPER_RIGID_MOTIONS, 400, 400))
+    for(const auto& set : s->sets)
+    {
+      const TSI::Run_partitions partitions(s->grid, set, k);
+      for(std::size_t count = 1; count <= k; ++count)
+      {
+        const std::vector<std::size_t> label = partitions.label(count);
+        EXPECT_EQ(label, TSI::best_runs(s->grid, set, count)) << count << " molds";
+        if(label.empty()) continue;
+        ++compared;
+        EXPECT_EQ(std::set<std::size_t>(label.begin(), label.end()).size(), count);
+      }
+    }
+  EXPECT_GT(compared, 20u);
+}
+
+// The split segment clusterings have K clusters, each within one cluster of
+// a segment partition of fewer molds (at least K / 2), and differ from each
+// other.
+TEST(SegmentCandidates, SplitOnesRefineAPartitionOfFewerMolds)
+{
+  const Mesh m = horn<Mesh>(12, 8, 2.0, 2.6, [](int i) { return 0.4 * std::exp(0.08 * i); });
+  const auto fim = get(CGAL::face_index, m);
+  const auto vpm = get(CGAL::vertex_point, m);
+  const std::vector<TS::Panel> quads = TSI::face_quads(m, fim, CGAL::parameters::default_values());
+  std::vector<TS::Quad_descriptor> descriptors;
+  for(const TS::Panel& q : quads) descriptors.push_back(TS::shape_descriptor(q));
+  const std::size_t k = 22;
+  const std::vector<std::vector<std::size_t> > split =
+    TSI::split_segment_clusterings(m, fim, vpm, quads, descriptors, k, TS::PROPER_RIGID_MOTIONS, 0, 4);
+  ASSERT_EQ(split.size(), 4u);
+  const std::vector<std::vector<std::size_t> > coarse = every_segment_partition(m, k);
+  for(const std::vector<std::size_t>& label : split)
+  {
+    EXPECT_EQ(std::set<std::size_t>(label.begin(), label.end()).size(), k);
+    EXPECT_TRUE(std::any_of(coarse.begin(), coarse.end(), [&](const std::vector<std::size_t>& c) {
+      const std::size_t molds = std::set<std::size_t>(c.begin(), c.end()).size();
+      return molds < k && molds >= k / 2 && refines(label, c);
+    }));
+    EXPECT_EQ(std::count(split.begin(), split.end(), label), 1);
+  }
+}

@@ -51,6 +51,10 @@ namespace Tilable_surfaces {
 struct Clustering_candidate
 {
   /// Where the configuration comes from.
+  /// `GRID_SEGMENTS`: runs of rows of a quad grid, each a segment of column
+  /// molds or a band of one mold, with K molds, or with fewer and their
+  /// largest clusters split by shape until K (user manual, section
+  /// TS_Fidelity).
   /// `GRID_SWEEPS`: every column of a run of rows of a quad grid is one
   /// cluster; such a clustering is exact on a swept surface built directly
   /// (user manual, section TS_Sweeps). These are never the configuration
@@ -344,10 +348,23 @@ private:
         add_best_match_candidate(result, label, Clustering_candidate::QUAD_STRIPS);
     // A quad grid has no triangle.
     if(m_settings.use_segments && m_k > 1 && !m_triangles)
+    {
       for(const std::vector<std::size_t>& label :
           segment_clusterings(m_pm, m_fim, m_vpm, m_k, m_settings.policy))
         add_best_match_candidate(result, label, Clustering_candidate::GRID_SEGMENTS);
+      // About 1 ms per face at K = 100 (10,000 faces: 11 s on 2 cores,
+      // results.md stop 35); above large_mesh_faces the sweeps serve grids.
+      if(m_n <= large_mesh_faces)
+        for(const std::vector<std::size_t>& label :
+            split_segment_clusterings(m_pm, m_fim, m_vpm, m_quads, m_descriptors, m_k, m_settings.policy,
+                                      m_settings.seed, split_segment_candidates))
+          add_best_match_candidate(result, label, Clustering_candidate::GRID_SEGMENTS);
+    }
   }
+
+  // How many segment clusterings of fewer molds, split to K, join the pool:
+  // those of least length deviation (split_segment_clusterings()).
+  static constexpr std::size_t split_segment_candidates = 4;
 
   void compute_affinity()
   {

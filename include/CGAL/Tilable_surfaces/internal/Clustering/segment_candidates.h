@@ -38,6 +38,7 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <memory>
 #include <numeric>
 #include <vector>
 
@@ -336,9 +337,9 @@ inline std::vector<std::size_t> group_columns(const Quad_grid& grid, std::size_t
   return group;
 }
 
-// The runs of rows, each with one of `options`, that use exactly k molds
-// with the least total cost; the cluster of every face, numbered by first
-// face, or an empty vector when no partition uses exactly k molds.
+// The runs of rows, each with one of `options`, that use exactly m molds
+// with the least total cost, for every m up to k (one dynamic program).
+// Refers to `grid` and to the options, which must outlive it.
 //
 // Unless `segments_may_touch`, two segments of several rows never follow
 // each other: in such a segment every quad has equal edges on its two row
@@ -346,81 +347,121 @@ inline std::vector<std::size_t> group_columns(const Quad_grid& grid, std::size_t
 // chain together, which the per-run cost does not see. A band or a one-row
 // segment between them lets the section change. A sweep wants exactly that
 // one section (sweep_clusterings()).
+class Run_partitions
+{
+public:
+  Run_partitions(const Quad_grid& grid, const std::vector<const Run_option*>& options, std::size_t k,
+                 bool segments_may_touch = false)
+    : m_grid(grid), m_options(options), m_k(k),
+      m_best((grid.rows + 1) * (k + 1) * 2, infinity()), m_choice(m_best.size())
+  {
+    const std::size_t rows = grid.rows;
+    m_best[state(0, 0, false)] = 0;
+    for(std::size_t b = 1; b <= rows; ++b)
+      for(std::size_t a = 0; a < b; ++a)
+        for(std::size_t i = 0; i < options.size(); ++i)
+        {
+          const std::size_t m = options[i]->groups;
+          if(m > k) continue;
+          const bool segment = !segments_may_touch && m > 1 && b - a > 1;
+          const double run = options[i]->cost(a, b);
+          for(std::size_t used = 0; used + m <= k; ++used)
+            for(bool before_segment : {false, true})
+            {
+              const double before = m_best[state(a, used, before_segment)];
+              if(before == infinity() || (segment && before_segment))
+                continue;
+              double& after = m_best[state(b, used + m, segment)];
+              if(before + run >= after)
+                continue;
+              after = before + run;
+              m_choice[state(b, used + m, segment)] = {a, i, before_segment};
+            }
+        }
+  }
+
+  // The cluster of every face with exactly m molds, numbered by first face,
+  // or an empty vector when no partition uses exactly m molds (or m > k).
+  std::vector<std::size_t> label(std::size_t m) const
+  {
+    std::vector<std::size_t> label;
+    if(m > m_k)
+      return label;
+    std::size_t b = m_grid.rows;
+    bool segment = m_best[state(b, m, true)] < m_best[state(b, m, false)];
+    if(m_best[state(b, m, segment)] == infinity())
+      return label;
+    label.assign(m_grid.face_at.size(), 0);
+    while(b > 0)
+    {
+      const Choice c = m_choice[state(b, m, segment)];
+      const Run_option& o = *m_options[c.option];
+      m -= o.groups;
+      for(std::size_t r = c.start; r < b; ++r)
+        for(std::size_t col = 0; col < m_grid.columns; ++col)
+          label[m_grid.face_at[r * m_grid.columns + col]] = m + o.column_group[col];
+      b = c.start;
+      segment = c.segment_before;
+    }
+    relabel_by_first_face(label);
+    return label;
+  }
+
+private:
+  struct Choice { std::size_t start = 0, option = 0; bool segment_before = false; };
+  static double infinity() { return (std::numeric_limits<double>::max)(); }
+  // State (r, m, s): rows [0, r) with m molds, s whether the last run is a
+  // segment of several rows.
+  std::size_t state(std::size_t r, std::size_t m, bool s) const { return (r * (m_k + 1) + m) * 2 + (s ? 1 : 0); }
+
+  const Quad_grid& m_grid;
+  std::vector<const Run_option*> m_options;
+  std::size_t m_k;
+  std::vector<double> m_best;
+  std::vector<Choice> m_choice;
+};
+
+// The runs of rows, each with one of `options`, that use exactly k molds
+// with the least total cost (Run_partitions).
 inline std::vector<std::size_t> best_runs(const Quad_grid& grid,
                                           const std::vector<const Run_option*>& options, std::size_t k,
                                           bool segments_may_touch = false)
 {
-  const std::size_t rows = grid.rows;
-  const double infinity = (std::numeric_limits<double>::max)();
-  // State (r, m, s): rows [0, r) with m molds, s whether the last run is a
-  // segment of several rows.
-  auto state = [k](std::size_t r, std::size_t m, bool s) { return (r * (k + 1) + m) * 2 + (s ? 1 : 0); };
-  std::vector<double> best((rows + 1) * (k + 1) * 2, infinity);
-  struct Choice { std::size_t start = 0, option = 0; bool segment_before = false; };
-  std::vector<Choice> choice(best.size());
-  best[state(0, 0, false)] = 0;
-  for(std::size_t b = 1; b <= rows; ++b)
-    for(std::size_t a = 0; a < b; ++a)
-      for(std::size_t i = 0; i < options.size(); ++i)
-      {
-        const std::size_t m = options[i]->groups;
-        if(m > k) continue;
-        const bool segment = !segments_may_touch && m > 1 && b - a > 1;
-        const double run = options[i]->cost(a, b);
-        for(std::size_t used = 0; used + m <= k; ++used)
-          for(bool before_segment : {false, true})
-          {
-            const double before = best[state(a, used, before_segment)];
-            if(before == infinity || (segment && before_segment))
-              continue;
-            double& after = best[state(b, used + m, segment)];
-            if(before + run >= after)
-              continue;
-            after = before + run;
-            choice[state(b, used + m, segment)] = {a, i, before_segment};
-          }
-      }
-  std::vector<std::size_t> label;
-  std::size_t b = rows, m = k;
-  bool segment = best[state(rows, k, true)] < best[state(rows, k, false)];
-  if(best[state(rows, k, segment)] == infinity)
-    return label;
-  label.assign(grid.face_at.size(), 0);
-  while(b > 0)
-  {
-    const Choice c = choice[state(b, m, segment)];
-    const Run_option& o = *options[c.option];
-    m -= o.groups;
-    for(std::size_t r = c.start; r < b; ++r)
-      for(std::size_t col = 0; col < grid.columns; ++col)
-        label[grid.face_at[r * grid.columns + col]] = m + o.column_group[col];
-    b = c.start;
-    segment = c.segment_before;
-  }
-  relabel_by_first_face(label);
-  return label;
+  return Run_partitions(grid, options, k, segments_may_touch).label(k);
 }
 
-// The segment clusterings with k clusters, for both choices of the rows:
-// bands with segments of the columns in G groups, for G the number of
-// columns, half and a quarter of it (`group_columns()`), then with all of
-// them. None when the quads do not form a grid, or it has more than
-// `max_rows` rows or `max_columns` columns.
-template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
-std::vector<std::vector<std::size_t> >
-segment_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, std::size_t k,
-                    Orientation_policy policy, std::size_t max_rows = 400, std::size_t max_columns = 400)
+// A quad grid with its ways to make a run of rows congruent: bands with
+// segments of the columns in G groups, for G the number of columns, half
+// and a quarter of it (`group_columns()`), then with all of them.
+struct Segment_options
 {
-  std::vector<std::vector<std::size_t> > result;
+  Quad_grid grid;
+  std::vector<Run_option> options;
+  std::vector<std::vector<const Run_option*> > sets;
+};
+
+// The segment options for both choices of the rows, for up to k molds.
+// None when the quads do not form a grid, or it has more than `max_rows`
+// rows or `max_columns` columns. Held by unique_ptr: the sets point into
+// the options.
+template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
+std::vector<std::unique_ptr<Segment_options> >
+segment_options(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, std::size_t k,
+                Orientation_policy policy, std::size_t max_rows, std::size_t max_columns)
+{
+  std::vector<std::unique_ptr<Segment_options> > result;
   const std::array<std::vector<std::size_t>, 2> strips = quad_strips(pm, fim);
   for(int row_direction = 0; row_direction < 2; ++row_direction)
   {
-    const Quad_grid grid = quad_grid(pm, fim, vpm, strips, row_direction);
+    std::unique_ptr<Segment_options> s(new Segment_options);
+    s->grid = quad_grid(pm, fim, vpm, strips, row_direction);
+    const Quad_grid& grid = s->grid;
     // The dynamic program takes about 4 rows^2 K steps.
     if(grid.rows == 0 || grid.rows > max_rows || grid.columns > max_columns ||
        double(grid.rows) * double(grid.rows) * double(k) > 1e8)
       continue;
-    std::vector<Run_option> options;
+    std::vector<Run_option>& options = s->options;
+    options.reserve(4);
     options.push_back(run_option(grid, std::vector<std::size_t>(grid.columns, 0), 1, policy));
     for(std::size_t groups : {grid.columns, (grid.columns + 1) / 2, (grid.columns + 3) / 4})
     {
@@ -433,23 +474,90 @@ segment_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
         std::iota(column_group.begin(), column_group.end(), std::size_t(0));
       options.push_back(run_option(grid, column_group, groups, policy));
     }
-    std::vector<std::vector<const Run_option*> > sets;
     for(std::size_t i = 1; i < options.size(); ++i)
-      sets.push_back({&options[0], &options[i]});
+      s->sets.push_back({&options[0], &options[i]});
     // All options together, unless that is the one set above.
     if(options.size() != 2)
     {
-      sets.push_back({});
+      s->sets.push_back({});
       for(const Run_option& o : options)
-        sets.back().push_back(&o);
+        s->sets.back().push_back(&o);
     }
-    for(const std::vector<const Run_option*>& set : sets)
+    result.push_back(std::move(s));
+  }
+  return result;
+}
+
+// The segment clusterings with k clusters, for both choices of the rows and
+// every set of segment options.
+template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
+std::vector<std::vector<std::size_t> >
+segment_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, std::size_t k,
+                    Orientation_policy policy, std::size_t max_rows = 400, std::size_t max_columns = 400)
+{
+  std::vector<std::vector<std::size_t> > result;
+  for(const std::unique_ptr<Segment_options>& s : segment_options(pm, fim, vpm, k, policy, max_rows, max_columns))
+    for(const std::vector<const Run_option*>& set : s->sets)
     {
-      std::vector<std::size_t> label = best_runs(grid, set, k);
+      std::vector<std::size_t> label = best_runs(s->grid, set, k);
       if(!label.empty() && std::find(result.begin(), result.end(), label) == result.end())
         result.push_back(label);
     }
-  }
+  return result;
+}
+
+// Segment clusterings of fewer molds, m from k / 2 to k - 1, with their
+// largest clusters split by shape until k (split_to()); the `count` of
+// least length deviation (Edge_sharing_graph::length_deviation()), in that
+// order. Adding molds to a segment clustering that fits the grid keeps its
+// structure, where the best runs with exactly k molds may change it
+// (seashell stand-in, K = 96: those end at 4.8% of the diagonal or farther,
+// the one of 80 molds split to 96 at 1.6%, results.md stop 35); the length
+// deviation tells the structures that fit (there, 80 and 60 molds rank
+// first by it, as by the predicted displacement). Each split has its own
+// generator seeded by `seed`, so the result does not depend on the order
+// or the threads.
+template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
+std::vector<std::vector<std::size_t> >
+split_segment_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
+                          const std::vector<Panel>& quads, const std::vector<Quad_descriptor>& descriptors,
+                          std::size_t k, Orientation_policy policy, unsigned int seed, std::size_t count,
+                          std::size_t max_rows = 400, std::size_t max_columns = 400)
+{
+  std::vector<std::vector<std::size_t> > labels;
+  for(const std::unique_ptr<Segment_options>& s : segment_options(pm, fim, vpm, k, policy, max_rows, max_columns))
+    for(const std::vector<const Run_option*>& set : s->sets)
+    {
+      const Run_partitions partitions(s->grid, set, k);
+      for(std::size_t m = (std::max)(std::size_t(1), k / 2); m < k; ++m)
+      {
+        std::vector<std::size_t> label = partitions.label(m);
+        if(!label.empty() && std::find(labels.begin(), labels.end(), label) == labels.end())
+          labels.push_back(std::move(label));
+      }
+    }
+  std::vector<double> deviation(labels.size());
+  parallel_for(labels.size(), [&](std::size_t i) {
+    Initial_clustering init;
+    init.cluster = labels[i];
+    init.orientation.assign(quads.size(), Quad_orientation());
+    for(std::size_t f = 0; f < quads.size(); ++f)
+      if(init.cluster[f] >= init.leaders.size())
+        init.leaders.push_back(f); // labels are numbered by first face
+    CGAL::Random random(seed);
+    split_to(k, quads, descriptors, policy, random, init);
+    labels[i] = init.cluster;
+    relabel_by_first_face(labels[i]);
+    const Cluster_shapes shapes = cluster_shapes(quads, labels[i], k, policy);
+    deviation[i] = edge_sharing_graph(pm, fim, vpm, labels[i], shapes.orientation, k).length_deviation();
+  });
+  std::vector<std::size_t> order(labels.size());
+  std::iota(order.begin(), order.end(), std::size_t(0));
+  std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return deviation[a] < deviation[b]; });
+  std::vector<std::vector<std::size_t> > result;
+  for(std::size_t i = 0; i < order.size() && result.size() < count; ++i)
+    if(std::find(result.begin(), result.end(), labels[order[i]]) == result.end())
+      result.push_back(labels[order[i]]);
   return result;
 }
 

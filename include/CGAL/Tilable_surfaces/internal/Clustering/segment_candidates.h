@@ -514,9 +514,9 @@ segment_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
 // (seashell stand-in, K = 96: those end at 4.8% of the diagonal or farther,
 // the one of 80 molds split to 96 at 1.6%, results.md stop 35); the length
 // deviation tells the structures that fit (there, 80 and 60 molds rank
-// first by it, as by the predicted displacement). Each split has its own
-// generator seeded by `seed`, so the result does not depend on the order
-// or the threads.
+// first by it, as by the predicted displacement). The splits of each
+// partition draw from a generator of their own, seeded by `seed`, so the
+// result does not depend on the order or the threads.
 template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
 std::vector<std::vector<std::size_t> >
 split_segment_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,

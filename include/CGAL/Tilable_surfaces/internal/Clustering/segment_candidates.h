@@ -511,8 +511,9 @@ segment_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
 // least length deviation (Edge_sharing_graph::length_deviation()), in that
 // order. Adding molds to a segment clustering that fits the grid keeps its
 // structure, where the best runs with exactly k molds may change it
-// (seashell stand-in, K = 96: those end at 4.8% of the diagonal or farther,
-// the one of 80 molds split to 96 at 1.6%, results.md stop 35); the length
+// (seashell stand-in, K = 96: those that end exact and uncrossed end at
+// 4.8% of the diagonal or farther, the one of 80 molds split to 96 at
+// 1.6%, results.md stop 35); the length
 // deviation tells the structures that fit (there, 80 and 60 molds rank
 // first by it, as by the predicted displacement). The splits of each
 // partition draw from a generator of their own, seeded by `seed`, so the

@@ -461,7 +461,7 @@ segment_options(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, std
        double(grid.rows) * double(grid.rows) * double(k) > 1e8)
       continue;
     std::vector<Run_option>& options = s->options;
-    options.reserve(4);
+    options.reserve(4); // at most 4: the sets' pointers stay valid
     options.push_back(run_option(grid, std::vector<std::size_t>(grid.columns, 0), 1, policy));
     for(std::size_t groups : {grid.columns, (grid.columns + 1) / 2, (grid.columns + 3) / 4})
     {
@@ -507,7 +507,7 @@ segment_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
 }
 
 // Segment clusterings of fewer molds, m from k / 2 to k - 1, with their
-// largest clusters split by shape until k (split_to()); the `count` of
+// largest clusters split by shape until k (bring_to()); the `count` of
 // least length deviation (Edge_sharing_graph::length_deviation()), in that
 // order. Adding molds to a segment clustering that fits the grid keeps its
 // structure, where the best runs with exactly k molds may change it
@@ -526,6 +526,7 @@ split_segment_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMa
                           std::size_t max_rows = 400, std::size_t max_columns = 400)
 {
   std::vector<std::vector<std::size_t> > labels;
+  std::vector<std::size_t> molds;
   for(const std::unique_ptr<Segment_options>& s : segment_options(pm, fim, vpm, k, policy, max_rows, max_columns))
     for(const std::vector<const Run_option*>& set : s->sets)
     {
@@ -534,21 +535,16 @@ split_segment_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMa
       {
         std::vector<std::size_t> label = partitions.label(m);
         if(!label.empty() && std::find(labels.begin(), labels.end(), label) == labels.end())
+        {
           labels.push_back(std::move(label));
+          molds.push_back(m);
+        }
       }
     }
   std::vector<double> deviation(labels.size());
   parallel_for(labels.size(), [&](std::size_t i) {
-    Initial_clustering init;
-    init.cluster = labels[i];
-    init.orientation.assign(quads.size(), Quad_orientation());
-    for(std::size_t f = 0; f < quads.size(); ++f)
-      if(init.cluster[f] >= init.leaders.size())
-        init.leaders.push_back(f); // labels are numbered by first face
     CGAL::Random random(seed);
-    split_to(k, quads, descriptors, policy, random, init);
-    labels[i] = init.cluster;
-    relabel_by_first_face(labels[i]);
+    bring_to(k, pm, fim, vpm, quads, descriptors, policy, random, labels[i], molds[i]);
     const Cluster_shapes shapes = cluster_shapes(quads, labels[i], k, policy);
     deviation[i] = edge_sharing_graph(pm, fim, vpm, labels[i], shapes.orientation, k).length_deviation();
   });

@@ -1,11 +1,13 @@
 // The whole pipeline of make_k_set_tilable() from ~1k to ~100k quads.
 //
-// On four generated surfaces (benchmark_surfaces.h) at K = 100, the
+// On six generated surfaces (benchmark_surfaces.h) at K = 100, the
 // seashell parametrization (a full grid closed around its tube), a saddle
 // roof trimmed by an elliptic outline (a grid whose rows have different
-// lengths), an oval torus (a grid closed both ways) and an elliptic dome
-// meshed with a pole (a fan of triangles, then rings of quads), from about
-// 1k to 100k quads, it prints a markdown table: the time of each
+// lengths), an oval torus (a grid closed both ways), an elliptic dome
+// meshed with a pole (a fan of triangles, then rings of quads), a facade
+// with window openings (a grid with holes) and an ellipsoid meshed as a quad
+// ball (no grid), from about 1k to 100k quads (the quad ball to 10k), it
+// prints a markdown table: the time of each
 // phase (validation, clustering, the displacement prediction that ranks the
 // candidate clusterings, their optimization, the improvement rounds, with
 // the sweep clusterings solved first from their exact start), the total,
@@ -27,7 +29,9 @@
 // Given mesh files instead, it runs each of them, at K = max(4, faces / 25)
 // unless --k is given (the rule of the issue "Scale and robust exactness").
 //
-// Usage: benchmark_pipeline [--k K] [--max-quads N] [--budget SECONDS] [FILE ...]
+// `--surface NAME` (repeatable) runs only the generated surfaces named.
+//
+// Usage: benchmark_pipeline [--k K] [--max-quads N] [--budget SECONDS] [--surface NAME] [FILE ...]
 #include "benchmark_surfaces.h"
 
 #include <CGAL/Tilable_surfaces/IO/read_polygon_mesh.h>
@@ -142,13 +146,21 @@ bool run(const std::string& name, Mesh& mesh, std::size_t k, double budget, doub
   return !record.stopped;
 }
 
+// A generated surface and the resolutions n it is run at.
+struct Series
+{
+  std::string name;
+  Mesh (*generate)(int);
+  std::vector<int> resolutions;
+};
+
 } // namespace
 
 int main(int argc, char** argv)
 {
   std::size_t k = 0, max_quads = 100000;
   double budget = 600;
-  std::vector<std::string> files;
+  std::vector<std::string> files, surfaces;
   for(int i = 1; i < argc; ++i)
   {
     const std::string arg = argv[i];
@@ -158,14 +170,33 @@ int main(int argc, char** argv)
       max_quads = std::stoul(argv[++i]);
     else if(i + 1 < argc && arg == "--budget")
       budget = std::stod(argv[++i]);
+    else if(i + 1 < argc && arg == "--surface")
+      surfaces.push_back(argv[++i]);
     else if(arg.rfind("--", 0) == 0)
     {
-      std::cerr << "usage: benchmark_pipeline [--k K] [--max-quads N] [--budget SECONDS] [FILE ...]\n";
+      std::cerr << "usage: benchmark_pipeline [--k K] [--max-quads N] [--budget SECONDS] [--surface NAME] "
+                   "[FILE ...]\n";
       return EXIT_FAILURE;
     }
     else
       files.push_back(arg);
   }
+  const std::vector<Series> generated = {
+    {"seashell", benchmark_surfaces::seashell<Mesh>, {32, 100, 141, 224, 316}},
+    {"trimmed roof", benchmark_surfaces::trimmed_roof<Mesh>, {41, 130, 409}},
+    {"oval torus", benchmark_surfaces::oval_torus<Mesh>, {32, 100, 316}},
+    {"polar dome", benchmark_surfaces::polar_dome<Mesh>, {32, 100, 315}},
+    {"facade with openings", benchmark_surfaces::facade_with_openings<Mesh>, {36, 112, 352}},
+    // No sweep: its candidates are solved from the input with the whole KKT
+    // system, 1 to 3 s per iteration at 10k quads (results.md, stop 36), so
+    // 100k is left out.
+    {"quad ball", benchmark_surfaces::quad_ball<Mesh>, {13, 41}}};
+  for(const std::string& name : surfaces)
+    if(std::none_of(generated.begin(), generated.end(), [&](const Series& s) { return s.name == name; }))
+    {
+      std::cerr << "benchmark_pipeline: no generated surface named \"" << name << "\"\n";
+      return EXIT_FAILURE;
+    }
   if(!benchmark_surfaces::reset_peak_memory())
     std::cout << "(the peak memory cannot be reset here: each row's is the largest so far)\n";
   std::cout << "| surface | quads | K | validation (s) | clustering (s) | sweeps (s) | prediction (s)"
@@ -192,18 +223,21 @@ int main(int argc, char** argv)
   if(!files.empty())
     return EXIT_SUCCESS;
 
-  // One series of sizes of a generated surface; its growth exponents are
+  // Each series of sizes of a generated surface; its growth exponents are
   // printed after the table.
   std::ostringstream growth;
-  auto series = [&](const char* name, auto generate, std::initializer_list<int> resolutions) {
+  for(const Series& s : generated)
+  {
+    if(!surfaces.empty() && std::find(surfaces.begin(), surfaces.end(), s.name) == surfaces.end())
+      continue;
     std::vector<double> sizes, times, large_sizes, large_times;
-    for(int n : resolutions)
+    for(int n : s.resolutions)
     {
-      Mesh mesh = generate(n);
+      Mesh mesh = s.generate(n);
       if(mesh.number_of_faces() > max_quads)
         break;
       double seconds_taken = 0;
-      if(run(name, mesh, k > 0 ? k : 100, budget, seconds_taken))
+      if(run(s.name, mesh, k > 0 ? k : 100, budget, seconds_taken))
       {
         sizes.push_back(double(mesh.number_of_faces()));
         times.push_back(seconds_taken);
@@ -215,13 +249,9 @@ int main(int argc, char** argv)
       }
     }
     growth << '\n';
-    print_growth(growth, name, sizes, times, "the sizes that finished");
-    print_growth(growth, name, large_sizes, large_times, "the sizes above large_mesh_faces that finished");
-  };
-  series("seashell", benchmark_surfaces::seashell<Mesh>, {32, 100, 141, 224, 316});
-  series("trimmed roof", benchmark_surfaces::trimmed_roof<Mesh>, {41, 130, 409});
-  series("oval torus", benchmark_surfaces::oval_torus<Mesh>, {32, 100, 316});
-  series("polar dome", benchmark_surfaces::polar_dome<Mesh>, {32, 100, 315});
+    print_growth(growth, s.name.c_str(), sizes, times, "the sizes that finished");
+    print_growth(growth, s.name.c_str(), large_sizes, large_times, "the sizes above large_mesh_faces that finished");
+  }
   std::cout << growth.str();
   return EXIT_SUCCESS;
 }

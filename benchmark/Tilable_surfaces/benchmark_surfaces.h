@@ -2,8 +2,13 @@
 #ifndef CGAL_TILABLE_SURFACES_BENCHMARK_SURFACES_H
 #define CGAL_TILABLE_SURFACES_BENCHMARK_SURFACES_H
 
+#include "../../test/Tilable_surfaces/grid_mesh.h"
+
+#include <algorithm>
+#include <array>
 #include <cmath>
 #include <fstream>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -49,27 +54,16 @@ template <typename Mesh>
 Mesh trimmed_roof(int n)
 {
   typedef typename Mesh::Point Point;
-  typedef typename Mesh::Vertex_index Vertex;
-  auto inside = [n](int i, int j) {
-    const double x = -1 + 2 * (i + 0.5) / n, y = -1 + 2 * (j + 0.5) / n;
-    return x * x + (y / 0.8) * (y / 0.8) <= 0.95;
-  };
-  Mesh m;
-  std::vector<Vertex> v(std::size_t(n + 1) * std::size_t(n + 1), Mesh::null_vertex());
-  auto id = [&](int i, int j) {
-    Vertex& w = v[std::size_t(j) * std::size_t(n + 1) + std::size_t(i)];
-    if(w == Mesh::null_vertex())
-    {
+  return grid_of_kept_cells<Mesh>(
+    n, n,
+    [n](int i, int j) {
       const double x = -1 + 2.0 * i / n, y = -1 + 2.0 * j / n;
-      w = m.add_vertex(Point(x, y, 0.35 * (x * x - y * y) + 0.08 * std::sin(2.5 * x + 1.3 * y)));
-    }
-    return w;
-  };
-  for(int j = 0; j < n; ++j)
-    for(int i = 0; i < n; ++i)
-      if(inside(i, j))
-        m.add_face(id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
-  return m;
+      return Point(x, y, 0.35 * (x * x - y * y) + 0.08 * std::sin(2.5 * x + 1.3 * y));
+    },
+    [n](int i, int j) {
+      const double x = -1 + 2 * (i + 0.5) / n, y = -1 + 2 * (j + 0.5) / n;
+      return x * x + (y / 0.8) * (y / 0.8) <= 0.95;
+    });
 }
 
 // A torus closed both ways on an n x n grid (n^2 quads): its tube, a circle
@@ -108,6 +102,69 @@ Mesh polar_dome(int n)
   for(int i = 0; i < n; ++i)
     for(int j = 0; j < n; ++j)
       m.add_face(id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+  return m;
+}
+
+// A curved facade on an n x n grid over [0, 1]^2, z = 0.15 sin(3 x) + 0.1 x y,
+// with window openings: a 4 x 4 array of holes of about n / 10 x n / 8 cells
+// (about 0.8 n^2 quads). A trimmed grid whose boundary has inner loops.
+template <typename Mesh>
+Mesh facade_with_openings(int n)
+{
+  typedef typename Mesh::Point Point;
+  const int bay = (std::max)(n / 4, 3);
+  return grid_of_kept_cells<Mesh>(
+    n, n,
+    [n](int i, int j) {
+      const double x = double(i) / n, y = double(j) / n;
+      return Point(x, y, 0.15 * std::sin(3 * x) + 0.1 * x * y);
+    },
+    [n, bay](int i, int j) {
+      const int u = i % bay - bay / 3, w = j % bay - bay / 4;
+      return !(u >= 0 && u < (std::max)(n / 10, 1) && w >= 0 && w < (std::max)(n / 8, 1));
+    });
+}
+
+// An ellipsoid x^2 + (y / 0.8)^2 + (z / 0.7)^2 = 1 meshed as a quad ball: the
+// six faces of a cube, each an n x n grid, pushed out to it (6 n^2 quads).
+// Not a grid: its eight corners are vertices of valence 3, so it has no
+// sweep, as most remeshed freeform surfaces have none.
+template <typename Mesh>
+Mesh quad_ball(int n)
+{
+  typedef typename Mesh::Point Point;
+  typedef typename Mesh::Vertex_index Vertex;
+  Mesh m;
+  // The vertex at lattice point p of the cube's surface, p in [-n, n]^3.
+  std::map<std::array<int, 3>, Vertex> v;
+  auto id = [&](const std::array<int, 3>& p) {
+    auto it = v.find(p);
+    if(it == v.end())
+    {
+      const double r = std::sqrt(double(p[0]) * p[0] + double(p[1]) * p[1] + double(p[2]) * p[2]);
+      it = v.emplace(p, m.add_vertex(Point(p[0] / r, 0.8 * p[1] / r, 0.7 * p[2] / r))).first;
+    }
+    return it->second;
+  };
+  for(int axis = 0; axis < 3; ++axis)
+    for(int side : {-1, 1})
+      for(int i = 0; i < n; ++i)
+        for(int j = 0; j < n; ++j)
+        {
+          std::vector<Vertex> corners;
+          for(const auto& uv : {std::make_pair(i, j), std::make_pair(i + 1, j), std::make_pair(i + 1, j + 1),
+                                std::make_pair(i, j + 1)})
+          {
+            std::array<int, 3> p;
+            p[std::size_t(axis)] = side * n;
+            p[std::size_t(axis + 1) % 3] = 2 * uv.first - n;
+            p[std::size_t(axis + 2) % 3] = 2 * uv.second - n;
+            corners.push_back(id(p));
+          }
+          if(side < 0)
+            std::reverse(corners.begin(), corners.end());
+          m.add_face(corners);
+        }
   return m;
 }
 

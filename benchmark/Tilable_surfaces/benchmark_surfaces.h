@@ -87,21 +87,16 @@ template <typename Mesh>
 Mesh polar_dome(int n)
 {
   typedef typename Mesh::Point Point;
-  Mesh m;
+  // The vertex rings, numbered 1 .. n + 1 from the pole (ring 0, t = 0) to the equator (t = pi / 2).
+  Mesh m = tube_grid<Mesh>(n, 1.0, false, [n](double u, double s) {
+    const double t = 0.5 * M_PI * (u * n + 1) / (n + 1);
+    return Point(std::sin(t) * std::cos(s), 0.7 * std::sin(t) * std::sin(s), 0.8 * std::cos(t));
+  });
+  // tube_grid() adds the first ring's vertices first, so they are 0 .. n - 1.
   const typename Mesh::Vertex_index pole = m.add_vertex(Point(0, 0, 0.8));
-  std::vector<typename Mesh::Vertex_index> v;
-  for(int i = 1; i <= n + 1; ++i)
-    for(int j = 0; j < n; ++j)
-    {
-      const double t = 0.5 * M_PI * i / (n + 1), s = 2 * M_PI * j / n;
-      v.push_back(m.add_vertex(Point(std::sin(t) * std::cos(s), 0.7 * std::sin(t) * std::sin(s), 0.8 * std::cos(t))));
-    }
-  auto id = [&](int i, int j) { return v[std::size_t(i * n + (j % n))]; };
+  auto first_ring = [n](int j) { return typename Mesh::Vertex_index(typename Mesh::size_type(j % n)); };
   for(int j = 0; j < n; ++j)
-    m.add_face(pole, id(0, j), id(0, j + 1));
-  for(int i = 0; i < n; ++i)
-    for(int j = 0; j < n; ++j)
-      m.add_face(id(i, j), id(i + 1, j), id(i + 1, j + 1), id(i, j + 1));
+    m.add_face(pole, first_ring(j), first_ring(j + 1));
   return m;
 }
 

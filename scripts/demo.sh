@@ -1,12 +1,11 @@
 #!/usr/bin/env bash
-# README's first command: set up, build, and make the bundled seashell 60-set
-# tilable, with its report, tile catalog and pictures (the result beside the
-# input at the same camera) in out/.
+# README's first command: set up, build the command-line program (only it), and
+# make the bundled seashell 60-set tilable, with its report, tile catalog and
+# pictures (the result beside the input at the same camera) in out/.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-bash scripts/setup.sh
 # The pictures need a headless renderer: Debian's f3d under Xvfb.
-bash scripts/setup.sh --packages-only f3d xvfb xauth imagemagick
+bash scripts/setup.sh --cli f3d xvfb xauth imagemagick
 
 mkdir -p out
 ./build/bin/k_set_tilable examples/Tilable_surfaces/data/seashell.off -k 60 \

@@ -18,6 +18,9 @@
 #include <string>
 #include <vector>
 
+// One namespace per file: the testsuite is compiled as unity batches.
+namespace test_bad_input_unit {
+
 namespace TS = CGAL::Tilable_surfaces;
 namespace TSP = CGAL::Tilable_surfaces::parameters;
 typedef CGAL::Simple_cartesian<double>::Point_3 Point;
@@ -240,3 +243,5 @@ TEST(BadInput, TileCatalogWritersRefuseNonFiniteTilesBeforeWriting)
     EXPECT_TRUE(os.str().empty());
   }
 }
+
+} // namespace test_bad_input_unit

@@ -27,6 +27,9 @@
 #include <string>
 #include <vector>
 
+// One namespace per file: the testsuite is compiled as unity batches.
+namespace test_cli_unit {
+
 namespace TS = CGAL::Tilable_surfaces;
 namespace fs = std::filesystem;
 typedef CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> Mesh;
@@ -382,3 +385,5 @@ TEST(CommandLine, HostileFilesAreRefusedOrReadAsTheyAre)
   ASSERT_EQ(result.number_of_vertices(), 13u);
   EXPECT_EQ(result.point(Mesh::Vertex_index(12)), Mesh::Point(1.5, 0.5, 7.25)) << "not moved";
 }
+
+} // namespace test_cli_unit

@@ -27,6 +27,9 @@
 #include <string>
 #include <vector>
 
+// One namespace per file: the testsuite is compiled as unity batches.
+namespace test_cluster_quads_unit {
+
 namespace TS = CGAL::Tilable_surfaces;
 typedef CGAL::Simple_cartesian<double> Kernel;
 typedef Kernel::Point_3 Point;
@@ -549,3 +552,5 @@ TEST(ClusterQuads, DescriptorPathOnALargerGrid)
   EXPECT_EQ(number_of_clusters(m, mp), 50u);
   EXPECT_EQ(r.degree_of_flexibility, brute_force_dof(m, mp, 50));
 }
+
+} // namespace test_cluster_quads_unit

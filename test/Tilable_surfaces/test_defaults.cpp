@@ -19,6 +19,9 @@
 #include <string>
 #include <vector>
 
+// One namespace per file: the testsuite is compiled as unity batches.
+namespace test_defaults_unit {
+
 namespace TS = CGAL::Tilable_surfaces;
 namespace TSP = CGAL::Tilable_surfaces::parameters;
 typedef CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> Mesh;
@@ -171,3 +174,5 @@ TEST(Defaults, ThePipelineUsesThem)
   EXPECT_EQ(implicit.orientation, spelled_out.orientation);
   EXPECT_EQ(implicit.points, spelled_out.points);
 }
+
+} // namespace test_defaults_unit

@@ -23,6 +23,8 @@
 #include <string>
 #include <vector>
 
+// One namespace per file: the testsuite is compiled as unity batches.
+namespace test_deviation_budget_unit {
 
 namespace {
 
@@ -256,3 +258,5 @@ TEST(TileCountCurve, MoreMoldsNeverEndFartherThanFewer)
   EXPECT_EQ(curve[1].self_intersecting_face_pairs, 0u);
   EXPECT_LE(curve[1].hausdorff_distance, curve[0].hausdorff_distance + 1e-12);
 }
+
+} // namespace test_deviation_budget_unit

@@ -11,6 +11,9 @@
 #include <functional>
 #include <vector>
 
+// One namespace per file: the testsuite is compiled as unity batches.
+namespace test_edge_sharing_graph_unit {
+
 namespace TS = CGAL::Tilable_surfaces;
 typedef CGAL::Simple_cartesian<double> Kernel;
 typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
@@ -172,3 +175,5 @@ TEST(EdgeSharingGraph, LengthDeviationByHand)
   apart.merge_clusters(0, 1, TS::Quad_orientation(0));
   EXPECT_NEAR(apart.length_deviation(), 1.0, 1e-12);
 }
+
+} // namespace test_edge_sharing_graph_unit

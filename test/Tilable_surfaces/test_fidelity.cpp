@@ -22,6 +22,9 @@
 #include <cmath>
 #include <vector>
 
+// One namespace per file: the testsuite is compiled as unity batches.
+namespace test_fidelity_unit {
+
 using namespace test_helpers;
 namespace TSP = CGAL::Tilable_surfaces::parameters;
 
@@ -255,3 +258,5 @@ TEST(Fidelity, ImprovementRoundsNeverMakeItWorse)
   else if(!b.is_tilable())
     EXPECT_LE(mb.congruence_error, ma.congruence_error);
 }
+
+} // namespace test_fidelity_unit

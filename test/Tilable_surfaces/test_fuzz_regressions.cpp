@@ -11,6 +11,9 @@
 #include <sstream>
 #include <string>
 
+// One namespace per file: the testsuite is compiled as unity batches.
+namespace test_fuzz_regressions_unit {
+
 namespace fs = std::filesystem;
 
 TEST(FuzzRegressions, EveryRecordedInputGivesItsRecordedOutcome)
@@ -32,3 +35,5 @@ TEST(FuzzRegressions, EveryRecordedInputGivesItsRecordedOutcome)
   }
   EXPECT_GT(replayed, 0u);
 }
+
+} // namespace test_fuzz_regressions_unit

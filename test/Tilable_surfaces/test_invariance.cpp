@@ -21,6 +21,8 @@
 #include <string>
 #include <vector>
 
+// One namespace per file: the testsuite is compiled as unity batches.
+namespace test_invariance_unit {
 
 namespace {
 
@@ -55,9 +57,10 @@ double bbox_diagonal(const Mesh& m)
 
 Eigen::Vector3d eigen(const Point& p) { return Eigen::Vector3d(p.x(), p.y(), p.z()); }
 
-class Invariance : public ::testing::TestWithParam<const char*> {};
-
 } // namespace
+
+// Outside the anonymous namespace: the test classes derive from it.
+class Invariance : public ::testing::TestWithParam<const char*> {};
 
 TEST_P(Invariance, SimilarityOfTheInputGivesTheSameClusteringAndTheSimilarResult)
 {
@@ -153,3 +156,5 @@ INSTANTIATE_TEST_SUITE_P(PaperSurfaces, Invariance, ::testing::Values("de_beers_
 // results of the same quality (user manual, section Invariance). Run with
 // --gtest_also_run_disabled_tests.
 INSTANTIATE_TEST_SUITE_P(DISABLED_SymmetricSurfaces, Invariance, ::testing::Values("monkey_saddle.off"));
+
+} // namespace test_invariance_unit

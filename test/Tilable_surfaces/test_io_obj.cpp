@@ -29,6 +29,9 @@
 #include <string>
 #include <vector>
 
+// One namespace per file: the testsuite is compiled as unity batches.
+namespace test_io_obj_unit {
+
 namespace TS = CGAL::Tilable_surfaces;
 namespace TSP = CGAL::Tilable_surfaces::parameters;
 namespace fs = std::filesystem;
@@ -214,3 +217,5 @@ TEST(WriteTiledOBJ, RefusesANegativeClusterIdAndCreatesNoFile)
   EXPECT_TRUE(obj_out.str().empty());
   EXPECT_THROW(TS::IO::write_tiled_MTL(mtl_out, mesh, TSP::face_cluster_map(cluster)), TS::Invalid_input);
 }
+
+} // namespace test_io_obj_unit

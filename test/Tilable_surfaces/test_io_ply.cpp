@@ -20,6 +20,8 @@
 #include <sstream>
 #include <string>
 
+// One namespace per file: the testsuite is compiled as unity batches.
+namespace test_io_ply_unit {
 
 namespace {
 
@@ -158,3 +160,5 @@ TEST(WriteEdgeComponentsPLY, EachFanTriangleHasItsEdgesComponentColour)
     EXPECT_EQ(color.first[t], palette[expected]) << t;
   }
 }
+
+} // namespace test_io_ply_unit

@@ -20,6 +20,14 @@
 #include <type_traits>
 #include <vector>
 
+#ifdef CGAL_LINKED_WITH_TBB
+#include <tbb/global_control.h>
+#include <tbb/info.h>
+#include <tbb/task_arena.h>
+#endif
+
+// One namespace per file: the testsuite is compiled as unity batches.
+namespace test_make_k_set_tilable_unit {
 
 namespace {
 
@@ -499,7 +507,6 @@ TEST(MakeKSetTilable, OneVisitorFollowsEveryStage)
 }
 
 #ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/global_control.h>
 
 // With the parallel tag (the default tag runs on one thread whatever the
 // limit): the candidates' displacement predictions, made in parallel, and
@@ -672,8 +679,6 @@ TEST(MakeKSetTilable, AboveFiveThousandFacesNoPredictionIsMade)
 }
 
 #ifdef CGAL_LINKED_WITH_TBB
-#include <tbb/info.h>
-#include <tbb/task_arena.h>
 
 namespace {
 
@@ -713,3 +718,5 @@ TEST(MakeKSetTilable, ConcurrencyTagChangesTheThreadsNotTheResult)
   EXPECT_EQ(sequential, parallel);
 }
 #endif
+
+} // namespace test_make_k_set_tilable_unit

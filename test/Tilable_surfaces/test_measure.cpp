@@ -11,6 +11,9 @@
 #include <array>
 #include <cmath>
 
+// One namespace per file: the testsuite is compiled as unity batches.
+namespace test_measure_unit {
+
 using namespace test_helpers;
 
 namespace {
@@ -247,3 +250,5 @@ TEST(Measure, CongruentSQuadsAreOneMold)
     EXPECT_EQ(molds(two_quads(q, moved), proper), shift > 1e-6 ? 2u : 1u) << "corner moved by " << shift;
   }
 }
+
+} // namespace test_measure_unit

@@ -20,6 +20,9 @@
 #include <string>
 #include <vector>
 
+// One namespace per file: the testsuite is compiled as unity batches.
+namespace test_mesh_kinds_unit {
+
 namespace TS = CGAL::Tilable_surfaces;
 namespace TSP = CGAL::Tilable_surfaces::parameters;
 
@@ -158,3 +161,5 @@ TEST(MeshKinds, SurfaceMeshWithRemovedElementsIsRefusedUntilCollected)
   mesh.collect_garbage();
   tile_and_check(mesh, 30);
 }
+
+} // namespace test_mesh_kinds_unit

@@ -17,6 +17,8 @@
 #include <numeric>
 #include <string>
 
+// One namespace per file: the testsuite is compiled as unity batches.
+namespace test_mirrored_panels_unit {
 
 namespace {
 
@@ -101,3 +103,5 @@ TEST(MirroredPanels, OnAMirrorSymmetricSurfaceAtLeastAsCloseAsProperMotions)
     EXPECT_EQ(total, num_faces(mirrored));
   }
 }
+
+} // namespace test_mirrored_panels_unit

@@ -9,6 +9,9 @@
 
 #include <type_traits>
 
+// One namespace per file: the testsuite is compiled as unity batches.
+namespace test_named_parameters_unit {
+
 namespace TS = CGAL::Tilable_surfaces;
 namespace TSP = CGAL::Tilable_surfaces::parameters;
 namespace TNP = CGAL::Tilable_surfaces::internal_np;
@@ -95,3 +98,5 @@ TEST(NamedParameters, PropertyMapsAreStoredByValueAndShareTheirData)
   put(stored, Mesh::Vertex_index(0), 42);
   EXPECT_EQ(get(cluster, Mesh::Vertex_index(0)), 42);
 }
+
+} // namespace test_named_parameters_unit

@@ -18,6 +18,9 @@
 #include <sstream>
 #include <string>
 
+// One namespace per file: the testsuite is compiled as unity batches.
+namespace test_optimize_unit {
+
 using namespace test_helpers;
 
 namespace {
@@ -490,3 +493,5 @@ TEST(SparseSolver, RestoresTheOpenMPSetting)
   EXPECT_EQ(levels(), before);
 }
 #endif
+
+} // namespace test_optimize_unit

@@ -14,6 +14,9 @@
 #include <iostream>
 #include <string>
 
+// One namespace per file: the testsuite is compiled as unity batches.
+namespace test_paper_surfaces_unit {
+
 using namespace test_helpers;
 
 namespace {
@@ -65,3 +68,5 @@ INSTANTIATE_TEST_SUITE_P(Paper, PaperSurface,
                          });
 
 } // namespace
+
+} // namespace test_paper_surfaces_unit

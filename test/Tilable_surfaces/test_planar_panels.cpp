@@ -19,6 +19,8 @@
 #include <string>
 #include <vector>
 
+// One namespace per file: the testsuite is compiled as unity batches.
+namespace test_planar_panels_unit {
 
 namespace {
 
@@ -82,3 +84,5 @@ TEST(PlanarPanels, OnlyTheDefaultSolverTakesThem)
                TS::Invalid_input);
   for(auto v : vertices(mesh)) EXPECT_EQ(mesh.point(v), before.point(v)) << "untouched";
 }
+
+} // namespace test_planar_panels_unit

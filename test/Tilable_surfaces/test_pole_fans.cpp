@@ -14,6 +14,9 @@
 #include <set>
 #include <vector>
 
+// One namespace per file: the testsuite is compiled as unity batches.
+namespace test_pole_fans_unit {
+
 using namespace test_helpers;
 namespace TSI = CGAL::Tilable_surfaces::internal;
 
@@ -216,3 +219,5 @@ TEST(PoleFans, ClosedShellHasAMoldPerFan)
   for(std::size_t pole : fans.pole)
     EXPECT_LE((start.row(Eigen::Index(pole)) - input.row(Eigen::Index(pole))).norm(), 1e-9);
 }
+
+} // namespace test_pole_fans_unit

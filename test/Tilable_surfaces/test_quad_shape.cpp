@@ -11,6 +11,9 @@
 #include <set>
 #include <vector>
 
+// One namespace per file: the testsuite is compiled as unity batches.
+namespace test_quad_shape_unit {
+
 namespace TS = CGAL::Tilable_surfaces;
 using Eigen::Vector3d;
 
@@ -325,3 +328,5 @@ TEST(BoundedList, KeepsValuesInOrderUpToItsBound)
   for(int x : copy) sum += x;
   EXPECT_EQ(sum, 24);
 }
+
+} // namespace test_quad_shape_unit

@@ -20,6 +20,9 @@
 #include <string>
 #include <vector>
 
+// One namespace per file: the testsuite is compiled as unity batches.
+namespace test_read_quad_mesh_unit {
+
 namespace TS = CGAL::Tilable_surfaces;
 namespace TSP = CGAL::Tilable_surfaces::parameters;
 typedef CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> Mesh;
@@ -271,3 +274,5 @@ TEST(ReadQuadMesh, UnreadableCoordinatesAreNamed)
   EXPECT_TRUE(contains(refusal(write(dir, "ref.obj", "v 0 0 0\nv 1 0 0\nv 1 1 0\nf 1 2 3 99\n")),
                        "(corrupt or truncated file)"));
 }
+
+} // namespace test_read_quad_mesh_unit

@@ -16,6 +16,9 @@
 #include <set>
 #include <vector>
 
+// One namespace per file: the testsuite is compiled as unity batches.
+namespace test_segment_candidates_unit {
+
 using namespace test_helpers;
 namespace TSI = CGAL::Tilable_surfaces::internal;
 
@@ -247,3 +250,5 @@ TEST(SegmentCandidates, SplitOnesRefineAPartitionOfFewerMolds)
     EXPECT_EQ(std::count(split.begin(), split.end(), label), 1);
   }
 }
+
+} // namespace test_segment_candidates_unit

@@ -28,6 +28,9 @@
 #include <set>
 #include <vector>
 
+// One namespace per file: the testsuite is compiled as unity batches.
+namespace test_sweep_start_unit {
+
 using namespace test_helpers;
 namespace TSI = CGAL::Tilable_surfaces::internal;
 
@@ -786,3 +789,5 @@ TEST(SweepStart, LargeGridPoolEndsAtAnExactSweep)
     EXPECT_LE(congruence_by_umeyama(m, surface.face_cluster_map(), surface.face_orientation_map()), 1e-6);
   }
 }
+
+} // namespace test_sweep_start_unit

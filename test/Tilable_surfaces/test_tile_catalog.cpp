@@ -10,6 +10,9 @@
 #include <string>
 #include <vector>
 
+// One namespace per file: the testsuite is compiled as unity batches.
+namespace test_tile_catalog_unit {
+
 namespace TS = CGAL::Tilable_surfaces;
 using Eigen::Vector3d;
 
@@ -129,3 +132,5 @@ TEST(TileCatalog, JsonParsesBackWithTheSameNumbers)
   EXPECT_EQ(t["mirrored"].get<std::size_t>(), 5u);
   EXPECT_EQ(t["worst_deviation"].get<double>(), 2.5e-7);
 }
+
+} // namespace test_tile_catalog_unit

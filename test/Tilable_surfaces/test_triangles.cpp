@@ -17,6 +17,9 @@
 #include <map>
 #include <string>
 
+// One namespace per file: the testsuite is compiled as unity batches.
+namespace test_triangles_unit {
+
 using namespace test_helpers;
 
 namespace {
@@ -250,3 +253,5 @@ TEST(Triangles, OneTileIsRefusedWhenTheMeshHasQuadsAndTriangles)
   expect_refused([&] { TS::make_k_set_tilable(mesh, maps.number_of_tiles(1).max_deviation(0.5)); },
                  "the largest K of a deviation search");
 }
+
+} // namespace test_triangles_unit

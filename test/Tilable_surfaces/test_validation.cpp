@@ -10,6 +10,9 @@
 #include <limits>
 #include <string>
 
+// One namespace per file: the testsuite is compiled as unity batches.
+namespace test_validation_unit {
+
 namespace TS = CGAL::Tilable_surfaces;
 typedef CGAL::Simple_cartesian<double>::Point_3 Point;
 typedef CGAL::Surface_mesh<Point> Mesh;
@@ -126,3 +129,5 @@ TEST(Validation, RefusesAnEmptyMesh)
   EXPECT_EQ(e.element(), TS::Invalid_input::MESH);
   EXPECT_TRUE(contains(e.what(), "no face")) << e.what();
 }
+
+} // namespace test_validation_unit

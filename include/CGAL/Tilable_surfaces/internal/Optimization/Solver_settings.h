@@ -8,7 +8,7 @@
 // a unit bounding-box diagonal, so every tolerance below is relative.
 
 #include <CGAL/Tilable_surfaces/internal/Tilable_problem.h>
-#include <CGAL/Tilable_surfaces/internal/Optimization/energy_terms.h>
+#include <CGAL/Tilable_surfaces/internal/Optimization/congruence_quantities.h>
 
 #include <Eigen/Core>
 #include <Eigen/Sparse>

@@ -5,8 +5,8 @@
 #define CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_CONGRUENCE_CONSTRAINTS_H
 
 // The equality constraints c(X) = 0 of the default solver, one row per
-// consecutive pair (a, b) of a group of energy_terms.h, in length units with
-// the length scale `ell`:
+// consecutive pair (a, b) of a group of congruence_quantities.h, in length
+// units with the length scale `ell`:
 // - squared lengths: ell (q_a - q_b) / (q_a + q_b);
 // - volumes: 6 ell (w_a - w_b), w = scale_free_volume(), or ell (w_a - w_b),
 //   w = volume_shape() (Volume_quantity);
@@ -22,7 +22,7 @@
 // curvature, without which the SQP steps converge only linearly.
 
 #include <CGAL/Tilable_surfaces/internal/parallel_for.h>
-#include <CGAL/Tilable_surfaces/internal/Optimization/energy_terms.h>
+#include <CGAL/Tilable_surfaces/internal/Optimization/congruence_quantities.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/quantity_hessian.h>
 
 #include <Eigen/Core>
@@ -39,7 +39,7 @@ namespace internal {
 // The SQP phase needs the constraints' exact Hessian, available for
 // scale_free_volume() only; the projection phase needs constraints whose
 // residual bounds the congruence error, which volume_shape() gives on slivers
-// too (energy_terms.h).
+// too (congruence_quantities.h).
 enum Volume_quantity { SCALE_FREE_VOLUME, VOLUME_SHAPE };
 
 class Congruence_constraints

@@ -14,7 +14,7 @@
 
 #include <CGAL/Tilable_surfaces/internal/Measure/congruence.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/Solver_settings.h>
-#include <CGAL/Tilable_surfaces/internal/Optimization/energy_terms.h>
+#include <CGAL/Tilable_surfaces/internal/Optimization/congruence_quantities.h>
 
 #include <algorithm>
 #include <cmath>

@@ -5,7 +5,8 @@
 #define CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_CONSTRAINED_GAUSS_NEWTON_H
 
 // The default solver: the surface closest to the input subject to the
-// congruence constraints c(X) = 0 of energy_terms.h, held as hard constraints.
+// congruence constraints c(X) = 0 of congruence_quantities.h, held as hard
+// constraints.
 //
 //   min_d  1/2 d^T H d,  H = mu1 I + mu2 D^T D (per coordinate),  X = X0 + d,
 //   s.t.   c(X0 + d) = 0.

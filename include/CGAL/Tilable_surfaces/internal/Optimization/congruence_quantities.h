@@ -1,8 +1,8 @@
 // Copyright (c) 2026 Tilable_surfaces contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-#ifndef CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_ENERGY_TERMS_H
-#define CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_ENERGY_TERMS_H
+#ifndef CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_CONGRUENCE_QUANTITIES_H
+#define CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_CONGRUENCE_QUANTITIES_H
 
 // The five terms of the paper's energy (§4) and the quantities they compare
 // (congruence_constraints.h turns them into the default solver's constraints).
@@ -186,4 +186,4 @@ inline Quantity volume_shape(const std::array<int, 4>& item, const Point_matrix&
 } // namespace Tilable_surfaces
 } // namespace CGAL
 
-#endif // CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_ENERGY_TERMS_H
+#endif // CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_CONGRUENCE_QUANTITIES_H

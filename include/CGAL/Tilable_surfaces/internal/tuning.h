@@ -117,6 +117,22 @@ constexpr double lm_good_gain_ratio = 0.75;
 // (times the mean edge): a few cheap quadratic steps reach round-off.
 constexpr double lm_round_off_residual = 1e-3;
 
+// Input checks (validation.h), relative to a double's range and precision.
+
+// Largest accepted coordinate magnitude: squares (lengths, areas) of larger
+// ones overflow a double.
+constexpr double coordinate_limit = 1e150;
+// Smallest accepted bounding-box diagonal: squares of smaller ones underflow.
+constexpr double extent_limit = 1e-140;
+// Smallest accepted diagonal relative to the largest coordinate: below it,
+// doubles resolve the shape to less than the congruence tolerance.
+constexpr double relative_extent_limit = 1e-7;
+// Shortest accepted edge, relative to the bounding-box diagonal: far below any
+// modelled detail, far above round-off.
+constexpr double min_edge_length = 1e-12;
+// Smallest accepted vector area of a face, relative to the squared diagonal.
+constexpr double min_face_area = 1e-12;
+
 
 // ---------------------------------------------------------------------------
 // Clustering: candidate generators and their selection by score

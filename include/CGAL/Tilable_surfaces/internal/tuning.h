@@ -133,6 +133,21 @@ constexpr double min_edge_length = 1e-12;
 // Smallest accepted vector area of a face, relative to the squared diagonal.
 constexpr double min_face_area = 1e-12;
 
+// Shape quantities and measurements (quad_shape.h, congruence_quantities.h,
+// Measure/congruence.h).
+
+// planarity_defect() takes the largest corner triangle as its base when the
+// base t0 t1 t2 has twice its area below this times the longest squared edge:
+// t0, t1, t2 are then nearly collinear and the height would be meaningless.
+constexpr double collinear_base = 1e-8;
+// epsilon in P = |N|^2 S + epsilon S^3 of volume_shape(): keeps P > 0 on a
+// collapsed quad, small against |N|^2 / S^2 of any quad of fair shape.
+constexpr double volume_shape_epsilon = 1e-4;
+// A cluster's mean S-quad with a planarity defect below this times its
+// diagonal t0t2 is planar: its mold is its own mirror image, so no instance
+// counts as mirrored.
+constexpr double planar_mold_defect = 1e-9;
+
 
 // ---------------------------------------------------------------------------
 // Clustering: candidate generators and their selection by score

@@ -305,7 +305,7 @@ private:
       // Second-order correction against the Maratos effect: the full step
       // plus the least-W-norm move back onto the constraints' linearization
       // at its end point. Only with the exact Hessian: with Gauss-Newton it
-      // measured no gain.
+      // gains nothing measurable.
       Eigen::VectorXd correction_multipliers = Eigen::VectorXd::Zero(m_c.size());
       const Eigen::VectorXd correction =
         kkt_step(Eigen::VectorXd::Zero(m_n), m_c_trial, correction_multipliers, eta);

@@ -148,6 +148,25 @@ constexpr double volume_shape_epsilon = 1e-4;
 // counts as mirrored.
 constexpr double planar_mold_defect = 1e-9;
 
+// The colours of the clusters (IO/cluster_colors.h): hues by the golden
+// angle, saturation and value stepping through a few levels so that large
+// counts stay distinct and every colour stays vivid and light enough.
+
+// Saturation of the first colours.
+constexpr double palette_saturation = 0.85;
+// Saturation drops by this much per level.
+constexpr double palette_saturation_step = 0.25;
+// Value (brightness) of the first colours.
+constexpr double palette_value = 0.95;
+// Value drops by this much per level.
+constexpr double palette_value_step = 0.2;
+// Levels of saturation and of value, cycled.
+constexpr int palette_levels = 3;
+// Consecutive ids that share a saturation level.
+constexpr int palette_saturation_period = 7;
+// Consecutive ids that share a value level: a full cycle of saturations.
+constexpr int palette_value_period = 21;
+
 
 // ---------------------------------------------------------------------------
 // Clustering: candidate generators and their selection by score

@@ -255,11 +255,7 @@ private:
       const Step step = line_search(Hd, nu, radius, eta);
       if(!step.accepted) // the merit refuses the step: leave it to the projection
         break;
-      if(step.alpha == step.alpha_max)
-        radius *= tuning::sqp_radius_growth;
-      else if(m_variant == CAUTIOUS_GAUSS_NEWTON || m_variant == EXACT_HESSIAN ||
-              step.alpha < tuning::sqp_backtracking * step.alpha_max)
-        radius = (std::max)(tuning::sqp_radius_shrink * radius, tuning::sqp_min_radius);
+      update_radius(step, radius);
       // Multipliers of the full step; those of a shortened step are blended.
       lambda += (std::min)(step.alpha, 1.0) * (lambda_trial - lambda);
       const double step_length = largest_move(step.d - m_d);
@@ -280,6 +276,18 @@ private:
     double alpha, alpha_max;
     bool accepted;
   };
+
+  // The trust region after an accepted step: it grows after a full step and
+  // shrinks after a shortened one, which Gauss-Newton tolerates down to half
+  // (Sqp_variant).
+  void update_radius(const Step& step, double& radius) const
+  {
+    if(step.alpha == step.alpha_max)
+      radius *= tuning::sqp_radius_growth;
+    else if(m_variant == CAUTIOUS_GAUSS_NEWTON || m_variant == EXACT_HESSIAN ||
+            step.alpha < tuning::sqp_backtracking * step.alpha_max)
+      radius = (std::max)(tuning::sqp_radius_shrink * radius, tuning::sqp_min_radius);
+  }
 
   // Backtracking along m_delta on the l2 merit f + nu |c| (nu above
   // |lambda|), within the trust region on the largest vertex move, in edge

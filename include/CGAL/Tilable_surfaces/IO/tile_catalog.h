@@ -44,8 +44,9 @@ inline Tile_row tile_row(const Tile& t)
 {
   const std::array<double, 4> edges = edge_lengths(t.corners);
   const double mean_edge = (edges[0] + edges[1] + edges[2] + edges[3]) / double(t.corners.size());
+  const bool is_planar = diagonal_distance(t.corners) <= defaults::congruence_tolerance * mean_edge;
   return Tile_row{edges, diagonal_lengths(t.corners), Tilable_surfaces::signed_volume(t.corners),
-                  planarity_defect(t.corners), diagonal_distance(t.corners) <= defaults::congruence_tolerance * mean_edge};
+                  planarity_defect(t.corners), is_planar};
 }
 
 // Refuses a catalog with a non-finite number, before anything is written.

@@ -26,8 +26,8 @@ constexpr double division_guard = 1e-300;
 // The paper's conjugate gradient (conjugate_gradient.h), on positions
 // normalized to a unit bounding-box diagonal.
 
-// First trial step, in mean edge lengths of the largest move: a hundredth of
-// an edge, small enough not to fold a face.
+// First trial step, as the largest vertex move in mean edge lengths: a small
+// move to start the bracketing from; later searches start from the last step.
 constexpr double cg_first_step = 0.01;
 // Energy evaluations of one line search at most: bounds its cost near
 // round-off, where the Wolfe conditions may not be met.

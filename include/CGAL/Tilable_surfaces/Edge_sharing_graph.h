@@ -244,8 +244,8 @@ public:
   /// by itself is not counted, so the value depends on how the clustering was
   /// reached: after `merge_clusters()` it includes the spread between the
   /// merged clusters' edges; for a clustering given at once, only that of its
-  /// links. Counting the within-edge spread too was measured worse as a
-  /// ranking (tunnel stand-in, K = 10: 3.1% of the diagonal instead of 1.6%).
+  /// links. Counting the within-edge spread too ranks the candidates worse
+  /// (tunnel stand-in, K = 10: 3.1% of the diagonal instead of 1.6%).
   double length_deviation() const { return m_length_deviation; }
 
   /// `length_deviation()` after `merge_clusters(kept, removed,

@@ -57,10 +57,11 @@ enum Solver_type
   /// with multiplier updates and a line search on an l2 merit function, then,
   /// once the constraint residuals stop decreasing, a Levenberg-Marquardt
   /// projection onto the constraints in the same metric. If that ends short
-  /// of `congruence_tolerance`, it is run again from the input with a more
-  /// cautious trust region, then with the exact Lagrangian Hessian (with
-  /// inertia control and second-order corrections), within the remaining
-  /// iterations, and the best result is kept.
+  /// of `congruence_tolerance`, it is run again from the input with an
+  /// isotropic closeness metric (sliding within the surface as dear as leaving
+  /// it), then with a more cautious trust region, then with the exact
+  /// Lagrangian Hessian (with inertia control and second-order corrections),
+  /// within the remaining iterations, and the best result is kept.
   /// Only the ratio mu2 / mu1 matters; mu3..mu5 are not used.
   CONSTRAINED_GAUSS_NEWTON,
   /// The paper's method, as a reference: Polak-Ribiere nonlinear conjugate
@@ -123,6 +124,29 @@ constexpr double feature_angle = 60.0;
 constexpr bool use_binary_mode = true;
 /// `stream_precision` of the PLY writers: every double exactly.
 constexpr int stream_precision = 17;
+/// `fairness_weight` (mu2) of `CONSTRAINED_GAUSS_NEWTON`: the weight of the
+/// as-rigid-as-possible energy of the displacement relative to
+/// `distance_weight`.
+constexpr double gauss_newton_fairness_weight = 1e-6;
+/// `fairness_weight` (mu2) of `PAPER_CONJUGATE_GRADIENT`: the paper's weight
+/// of its fairness term F_f.
+constexpr double paper_fairness_weight = 1e-4;
+/// `number_of_iterations` of `CONSTRAINED_GAUSS_NEWTON`.
+constexpr int gauss_newton_iterations = 300;
+/// `number_of_iterations` of `PAPER_CONJUGATE_GRADIENT`.
+constexpr int paper_iterations = 5000;
+/// `convergence_tolerance` of `CONSTRAINED_GAUSS_NEWTON`: the largest step,
+/// relative to the mean edge length, below which a congruent result stops.
+constexpr double gauss_newton_convergence_tolerance = 1e-9;
+/// `convergence_tolerance` of `PAPER_CONJUGATE_GRADIENT`: the relative
+/// decrease of the energy below which it stops.
+constexpr double paper_convergence_tolerance = 1e-12;
+/// `number_of_optimized_candidates`: at most this many.
+constexpr std::size_t max_optimized_candidates = 12;
+/// `number_of_optimized_candidates`: at least this many, at most 5000 faces.
+constexpr int min_optimized_candidates = 2;
+/// `number_of_optimized_candidates`: one more per this many faces fewer.
+constexpr int faces_per_optimized_candidate = 10000;
 } // namespace defaults
 
 /// \ingroup PkgTilableSurfacesRef
@@ -132,7 +156,8 @@ constexpr int stream_precision = 17;
 /// paper's weight of its fairness term F_f.
 inline double default_fairness_weight(Solver_type solver)
 {
-  return solver == CONSTRAINED_GAUSS_NEWTON ? 1e-6 : 1e-4;
+  return solver == CONSTRAINED_GAUSS_NEWTON ? defaults::gauss_newton_fairness_weight
+                                            : defaults::paper_fairness_weight;
 }
 
 /// \ingroup PkgTilableSurfacesRef
@@ -140,15 +165,18 @@ inline double default_fairness_weight(Solver_type solver)
 /// iterations, or 5000 of the paper's conjugate gradient.
 inline int default_number_of_iterations(Solver_type solver)
 {
-  return solver == CONSTRAINED_GAUSS_NEWTON ? 300 : 5000;
+  return solver == CONSTRAINED_GAUSS_NEWTON ? defaults::gauss_newton_iterations : defaults::paper_iterations;
 }
 
 /// \ingroup PkgTilableSurfacesRef
-/// The default of `convergence_tolerance` for `solver`: the relative change
-/// of the objective below which a solver stops.
+/// The default of `convergence_tolerance` for `solver`: for the default
+/// solver, the largest step, in mean edge lengths, below which a congruent
+/// result stops; for the paper's conjugate gradient, the relative decrease of
+/// the energy below which it stops.
 inline double default_convergence_tolerance(Solver_type solver)
 {
-  return solver == CONSTRAINED_GAUSS_NEWTON ? 1e-9 : 1e-12;
+  return solver == CONSTRAINED_GAUSS_NEWTON ? defaults::gauss_newton_convergence_tolerance
+                                            : defaults::paper_convergence_tolerance;
 }
 
 /// \ingroup PkgTilableSurfacesRef
@@ -175,7 +203,9 @@ inline std::size_t default_number_of_optimized_candidates(std::size_t number_of_
 {
   if(number_of_faces > large_mesh_faces)
     return 0;
-  return (std::min)(std::size_t(12), 2 + 10000 / (std::max)(number_of_faces, std::size_t(1)));
+  return (std::min)(defaults::max_optimized_candidates,
+                    defaults::min_optimized_candidates +
+                      defaults::faces_per_optimized_candidate / (std::max)(number_of_faces, std::size_t(1)));
 }
 
 } // namespace Tilable_surfaces

@@ -183,6 +183,88 @@ struct Optimization_setup
   Solver_input input() const { return Solver_input{problem, D, X0, fixed, metric}; }
 };
 
+// The positions `start` (by vertex index, in mesh units) normalized like the
+// solver's input, the fixed vertices at their input positions, in `S`; true
+// when the clustering is exact there, so the default solver may start there.
+inline bool normalized_exact_start(const Optimization_setup& setup, const Point_matrix& start, Point_matrix& S)
+{
+  S = (start.rowwise() - setup.centre) / setup.scale;
+  for(Eigen::Index i = 0; i < S.rows(); ++i)
+    if(setup.fixed[std::size_t(i)])
+      S.row(i) = setup.X0.row(i);
+  return congruence_error(setup.problem, S) <= setup.settings.congruence_tolerance;
+}
+
+// The input points moved by the displacement of the normalized positions Y
+// from X0, scaled back to mesh units; fixed vertices keep their input point.
+inline Point_matrix moved_points(const Optimization_setup& setup, const Point_matrix& Y)
+{
+  Point_matrix moved = setup.problem.points;
+  for(std::size_t i = 0; i < setup.fixed.size(); ++i)
+    if(!setup.fixed[i])
+      moved.row(Eigen::Index(i)) += setup.scale * (Y.row(Eigen::Index(i)) - setup.X0.row(Eigen::Index(i)));
+  return moved;
+}
+
+// Measures the normalized positions Y against the input into `result`, and
+// whether they meet the tolerance.
+inline void measure_result(const Optimization_setup& setup, const Point_matrix& Y, Optimization_result& result)
+{
+  const Tilable_problem& problem = setup.problem;
+  const double tolerance = setup.settings.congruence_tolerance;
+  result.measure = measure_tilability(problem, setup.D, problem.points, moved_points(setup, Y));
+  result.converged = result.measure.congruence_error <= tolerance &&
+                     (!problem.planar || result.measure.planarity_error <= tolerance);
+}
+
+// Measures the solver's result X; with `compare_with_start`, also the exact
+// start S, and keeps in X, and in `result`, the better of the two.
+inline void measure_better_result(const Optimization_setup& setup, const Point_matrix& S,
+                                  bool compare_with_start, Point_matrix& X, Optimization_result& result)
+{
+  measure_result(setup, X, result);
+  if(!compare_with_start)
+    return;
+  const Optimization_result solved = result;
+  measure_result(setup, S, result);
+  if(is_better(solved, result))
+  {
+    result.measure = solved.measure;
+    result.converged = solved.converged;
+  }
+  else
+  {
+    X = S;
+    result.energy = paper_energy(setup.problem, setup.D, X, setup.X0);
+  }
+}
+
+// Writes back the points of the vertices that moved, as their input position
+// plus the displacement in mesh units; fixed vertices are never written.
+template <class PolygonMesh, typename NamedParameters>
+void write_moved_points(PolygonMesh& pm, const NamedParameters& np, const Optimization_setup& setup,
+                        const Point_matrix& X)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
+  typedef typename GetVertexPointMap<PolygonMesh, NamedParameters>::type VertexPointMap;
+  typedef typename boost::property_traits<VertexPointMap>::value_type Point;
+
+  const auto vim = CGAL::get_initialized_vertex_index_map(pm, np);
+  VertexPointMap vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
+                                        get_property_map(CGAL::vertex_point, pm));
+  for(vertex_descriptor v : vertices(pm))
+  {
+    const std::size_t i = get(vim, v);
+    const Eigen::RowVector3d displacement = X.row(i) - setup.X0.row(i);
+    if(setup.fixed[i] || displacement.isZero(0))
+      continue;
+    const Eigen::RowVector3d p = setup.problem.points.row(i) + setup.scale * displacement;
+    put(vpm, v, Point(p(0), p(1), p(2)));
+  }
+}
+
 // optimize_tilable_surface() on a mesh validate_quad_mesh() accepted. With
 // `start` (positions by vertex index, in mesh units) at which the clustering
 // is exact, the default solver starts there instead of at the input, and the
@@ -196,42 +278,24 @@ template <class PolygonMesh, typename NamedParameters>
 Optimization_result optimize_tilable_surface(Validated_mesh, PolygonMesh& pm, const NamedParameters& np,
                                              const Point_matrix* start = nullptr)
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
-  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
-  typedef typename GetVertexPointMap<PolygonMesh, NamedParameters>::type VertexPointMap;
-  typedef typename boost::property_traits<VertexPointMap>::value_type Point;
-
   Optimization_result result;
   CGAL::Real_timer timer;
   timer.start();
   const Optimization_setup setup(Validated_mesh(true), pm, np);
-  const Tilable_problem& problem = setup.problem;
-  const Solver_settings& settings = setup.settings;
-  const Point_matrix& X0 = setup.X0;
-  const std::vector<bool>& fixed = setup.fixed;
-  const double scale = setup.scale;
-  const auto vim = CGAL::get_initialized_vertex_index_map(pm, np);
   result.setup_time = timer.time();
 
   timer.reset();
   Solver_input input = setup.input();
   Point_matrix S;
-  if(start != nullptr && setup.solver == CONSTRAINED_GAUSS_NEWTON && !problem.planar)
-  {
-    S = (start->rowwise() - setup.centre) / scale;
-    for(Eigen::Index i = 0; i < S.rows(); ++i)
-      if(fixed[std::size_t(i)])
-        S.row(i) = X0.row(i);
-    if(congruence_error(problem, S) <= settings.congruence_tolerance)
-      input.start = &S;
-  }
+  if(start != nullptr && setup.solver == CONSTRAINED_GAUSS_NEWTON && !setup.problem.planar &&
+     normalized_exact_start(setup, *start, S))
+    input.start = &S;
   auto&& visitor = visitor_of(np);
   Point_matrix X;
   const Solver_report report =
     setup.solver == CONSTRAINED_GAUSS_NEWTON
-      ? constrained_gauss_newton(input, settings, X, visitor)
-      : polak_ribiere(input, settings, X, visitor);
+      ? constrained_gauss_newton(input, setup.settings, X, visitor)
+      : polak_ribiere(input, setup.settings, X, visitor);
   // A solve that made no step from the start (stopped there by the visitor,
   // or given no iteration) returns the start itself, measured once.
   const bool compare_with_start = input.start != nullptr && report.iterations > 0;
@@ -240,53 +304,15 @@ Optimization_result optimize_tilable_surface(Validated_mesh, PolygonMesh& pm, co
   result.iterations = report.iterations;
   result.stopped_by_visitor = report.stopped_by_visitor;
   result.objective = report.objective;
-  result.energy = paper_energy(problem, setup.D, X, X0);
-
-  auto moved_points = [&](const Point_matrix& Y) {
-    Point_matrix moved = problem.points;
-    for(std::size_t i = 0; i < fixed.size(); ++i)
-      if(!fixed[i])
-        moved.row(Eigen::Index(i)) += scale * (Y.row(Eigen::Index(i)) - X0.row(Eigen::Index(i)));
-    return moved;
-  };
+  result.energy = paper_energy(setup.problem, setup.D, X, setup.X0);
   result.solve_time = timer.time();
 
   timer.reset();
-  auto measured = [&](const Point_matrix& Y) {
-    result.measure = measure_tilability(problem, setup.D, problem.points, moved_points(Y));
-    result.converged = result.measure.congruence_error <= settings.congruence_tolerance &&
-                       (!problem.planar || result.measure.planarity_error <= settings.congruence_tolerance);
-  };
-  measured(X);
-  if(compare_with_start)
-  {
-    const Optimization_result solved = result;
-    measured(S);
-    if(is_better(solved, result))
-    {
-      result.measure = solved.measure;
-      result.converged = solved.converged;
-    }
-    else
-    {
-      X = S;
-      result.energy = paper_energy(problem, setup.D, X, X0);
-    }
-  }
-  result.stalled = !result.converged && !result.stopped_by_visitor && report.iterations < settings.max_iterations;
+  measure_better_result(setup, S, compare_with_start, X, result);
+  result.stalled = !result.converged && !result.stopped_by_visitor &&
+                   report.iterations < setup.settings.max_iterations;
   result.measure_time = timer.time();
-
-  VertexPointMap vpm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_point),
-                                        get_property_map(CGAL::vertex_point, pm));
-  for(vertex_descriptor v : vertices(pm))
-  {
-    const std::size_t i = get(vim, v);
-    const Eigen::RowVector3d displacement = X.row(i) - X0.row(i);
-    if(fixed[i] || displacement.isZero(0))
-      continue;
-    const Eigen::RowVector3d p = problem.points.row(i) + scale * displacement;
-    put(vpm, v, Point(p(0), p(1), p(2)));
-  }
+  write_moved_points(pm, np, setup, X);
   return result;
 }
 
@@ -327,7 +353,8 @@ Optimization_result optimize_tilable_surface(Validated_mesh, PolygonMesh& pm, co
 ///   \cgalParamNBegin{solver} a `Solver_type`; default `CONSTRAINED_GAUSS_NEWTON` \cgalParamNEnd
 ///   \cgalParamNBegin{distance_weight} mu1, default 1e-4 (must be > 0 for the
 ///     default solver) \cgalParamNEnd
-///   \cgalParamNBegin{fairness_weight} mu2, default 1e-4 \cgalParamNEnd
+///   \cgalParamNBegin{fairness_weight} mu2, default 1e-6 (Gauss-Newton) or 1e-4
+///     (conjugate gradient) \cgalParamNEnd
 ///   \cgalParamNBegin{edge_length_weight} mu3, default 1 (conjugate gradient only) \cgalParamNEnd
 ///   \cgalParamNBegin{diagonal_weight} mu4, default 1 (conjugate gradient only) \cgalParamNEnd
 ///   \cgalParamNBegin{volume_weight} mu5, default 1 (conjugate gradient only) \cgalParamNEnd

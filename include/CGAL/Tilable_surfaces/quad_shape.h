@@ -16,6 +16,7 @@
 #include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/exceptions.h>
 #include <CGAL/Tilable_surfaces/named_parameters.h>
+#include <CGAL/Tilable_surfaces/internal/tuning.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -281,7 +282,7 @@ inline double planarity_defect(const Panel& q)
   double scale = 0;
   for(int i = 0; i < 4; ++i)
     scale = (std::max)(scale, (q[(i + 1) & 3] - q[i]).squaredNorm());
-  if(base > 1e-8 * scale)
+  if(base > internal::tuning::collinear_base * scale)
     return six_volume / base;
   double largest_base = 0;
   for(int i = 0; i < 4; ++i)

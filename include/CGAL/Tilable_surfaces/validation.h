@@ -10,6 +10,7 @@
 #include <CGAL/Tilable_surfaces/exceptions.h>
 #include <CGAL/Tilable_surfaces/named_parameters.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
+#include <CGAL/Tilable_surfaces/internal/tuning.h>
 
 #include <CGAL/Polyhedron_3_fwd.h>
 #include <CGAL/boost/graph/helpers.h>
@@ -56,41 +57,34 @@ struct Has_edge_indices<CGAL::Polyhedron_3<K, Items, HDS, Alloc> >
                 "Tilable_surfaces: CGAL::Polyhedron_3 needs items with ids "                      \
                 "(CGAL::Polyhedron_items_with_id_3): the package indexes edges by halfedge id")
 
-// Coordinates beyond this magnitude have squares (lengths, areas) that
-// overflow a double; a bounding-box diagonal below the next limit has squares
-// that underflow; a diagonal below `relative_extent_limit` times the largest
-// coordinate is resolved by doubles to less than the congruence tolerance.
-constexpr double coordinate_limit = 1e150;
-constexpr double extent_limit = 1e-140;
-constexpr double relative_extent_limit = 1e-7;
-
-// What `CGAL::is_valid_polygon_mesh()` checks, except that a vertex without a
-// halfedge (isolated, used by no face) is accepted. Returns an empty string
-// for a valid structure, else what is wrong. Every walk is bounded by the
-// number of halfedges, so a broken structure cannot make it loop.
+// The defect of a halfedge's links (next, opposite, target, edge, face), or
+// an empty string.
 template <typename PolygonMesh>
-std::string structure_defect(const PolygonMesh& pm)
+std::string halfedge_defect(typename boost::graph_traits<PolygonMesh>::halfedge_descriptor h,
+                            const PolygonMesh& pm)
 {
   typedef boost::graph_traits<PolygonMesh> GT;
-  const std::size_t nh = std::size_t(std::distance(halfedges(pm).begin(), halfedges(pm).end()));
-  const std::size_t ne = std::size_t(std::distance(edges(pm).begin(), edges(pm).end()));
-  if(nh != 2 * ne)
-    return "the numbers of halfedges and edges disagree";
-  for(auto h : halfedges(pm))
-  {
-    const auto n = next(h, pm), o = opposite(h, pm);
-    if(n == GT::null_halfedge() || o == GT::null_halfedge() || target(h, pm) == GT::null_vertex())
-      return "a halfedge has no next, opposite or target";
-    if(halfedge(edge(h, pm), pm) != h && halfedge(edge(h, pm), pm) != o)
-      return "an edge does not own its halfedges";
-    if(o == h || opposite(o, pm) != h || prev(n, pm) != h || next(prev(h, pm), pm) != h)
-      return "the opposite, next and previous halfedges are not reciprocal";
-    if(n == h || target(h, pm) != source(n, pm) || target(h, pm) == target(o, pm))
-      return "a halfedge does not join two distinct vertices in sequence";
-    if(face(h, pm) == face(o, pm) || next(n, pm) == h || target(h, pm) == target(n, pm) ||
-       target(h, pm) == target(next(n, pm), pm))
-      return "the surface is not a 2-manifold (an edge or face folds onto itself)";
-  }
+  const auto n = next(h, pm), o = opposite(h, pm);
+  if(n == GT::null_halfedge() || o == GT::null_halfedge() || target(h, pm) == GT::null_vertex())
+    return "a halfedge has no next, opposite or target";
+  if(halfedge(edge(h, pm), pm) != h && halfedge(edge(h, pm), pm) != o)
+    return "an edge does not own its halfedges";
+  if(o == h || opposite(o, pm) != h || prev(n, pm) != h || next(prev(h, pm), pm) != h)
+    return "the opposite, next and previous halfedges are not reciprocal";
+  if(n == h || target(h, pm) != source(n, pm) || target(h, pm) == target(o, pm))
+    return "a halfedge does not join two distinct vertices in sequence";
+  if(face(h, pm) == face(o, pm) || next(n, pm) == h || target(h, pm) == target(n, pm) ||
+     target(h, pm) == target(next(n, pm), pm))
+    return "the surface is not a 2-manifold (an edge or face folds onto itself)";
+  return std::string();
+}
+
+// The defect of the halfedge cycles around the vertices, or an empty string:
+// together they must hold each of the `nh` halfedges once.
+template <typename PolygonMesh>
+std::string vertex_cycles_defect(const PolygonMesh& pm, std::size_t nh)
+{
+  typedef boost::graph_traits<PolygonMesh> GT;
   std::size_t around_vertices = 0;
   for(auto v : vertices(pm))
   {
@@ -109,6 +103,15 @@ std::string structure_defect(const PolygonMesh& pm)
   }
   if(around_vertices != nh)
     return "a vertex is non-manifold (two fans of faces meet at a single vertex)";
+  return std::string();
+}
+
+// The defect of the halfedge cycles around the faces, or an empty string:
+// with the border halfedges they must hold each of the `nh` halfedges once.
+template <typename PolygonMesh>
+std::string face_cycles_defect(const PolygonMesh& pm, std::size_t nh)
+{
+  typedef boost::graph_traits<PolygonMesh> GT;
   std::size_t around_faces = 0;
   for(auto f : faces(pm))
   {
@@ -129,6 +132,27 @@ std::string structure_defect(const PolygonMesh& pm)
   if(around_faces != nh)
     return "some halfedges are on no face and not on the border";
   return std::string();
+}
+
+// What `CGAL::is_valid_polygon_mesh()` checks, except that a vertex without a
+// halfedge (isolated, used by no face) is accepted. Returns an empty string
+// for a valid structure, else what is wrong. Every walk is bounded by the
+// number of halfedges, so a broken structure cannot make it loop.
+template <typename PolygonMesh>
+std::string structure_defect(const PolygonMesh& pm)
+{
+  const std::size_t nh = std::size_t(std::distance(halfedges(pm).begin(), halfedges(pm).end()));
+  const std::size_t ne = std::size_t(std::distance(edges(pm).begin(), edges(pm).end()));
+  if(nh != 2 * ne)
+    return "the numbers of halfedges and edges disagree";
+  for(auto h : halfedges(pm))
+  {
+    std::string defect = halfedge_defect(h, pm);
+    if(!defect.empty())
+      return defect;
+  }
+  std::string defect = vertex_cycles_defect(pm, nh);
+  return defect.empty() ? face_cycles_defect(pm, nh) : defect;
 }
 
 // Whether `index` maps the `range` onto 0..n-1 without repetition, n being
@@ -195,6 +219,97 @@ void check_face_labels(const PolygonMesh& pm, FaceIndexMap fim, ClusterMap clust
                      (std::numeric_limits<std::size_t>::max)(), face_corner_count(f, pm));
 }
 
+// Throws unless the vertex, face and (where the mesh has them) edge indices
+// number the elements 0..n-1.
+template <typename PolygonMesh, typename VertexIndexMap, typename FaceIndexMap>
+void check_index_maps(const PolygonMesh& pm, const VertexIndexMap& vim, const FaceIndexMap& fim)
+{
+  bool compact = is_compact_index_map(vertices(pm), vim, num_vertices(pm)) &&
+                 is_compact_index_map(faces(pm), fim, num_faces(pm));
+  if constexpr(Has_edge_indices<PolygonMesh>::value)
+  {
+    // Where the mesh keeps halfedge ids (Polyhedron_items_with_id_3), they
+    // give the edge indices: this numbers them if they are not numbered yet.
+    CGAL::get_initialized_halfedge_index_map(pm);
+    compact = compact && is_compact_index_map(
+                           edges(pm), CGAL::get_initialized_edge_index_map(pm), num_edges(pm));
+  }
+  if(!compact)
+    throw Invalid_input("the vertex, edge or face indices are not 0..n-1 (a Surface_mesh with removed "
+                        "elements must be garbage-collected first: collect_garbage())");
+}
+
+// The diagonal of the bounding box of the vertices; throws for a coordinate
+// that is not finite or whose square overflows, and for a box too small.
+template <typename PolygonMesh, typename VertexPointMap, typename VertexIndexMap>
+double checked_bbox_diagonal(const PolygonMesh& pm, const VertexPointMap& vpm, const VertexIndexMap& vim)
+{
+  Eigen::Vector3d lo = Eigen::Vector3d::Constant((std::numeric_limits<double>::max)());
+  Eigen::Vector3d hi = -lo;
+  for(auto v : vertices(pm))
+  {
+    const Eigen::Vector3d x = to_eigen(get(vpm, v));
+    const bool finite = x.allFinite();
+    if(!finite || x.cwiseAbs().maxCoeff() > tuning::coordinate_limit)
+    {
+      std::ostringstream out;
+      out << "vertex " << get(vim, v) << " has a "
+          << (finite ? "coordinate beyond 1e150 in absolute value, whose square overflows ("
+                     : "non-finite coordinate (")
+          << x.x() << ", " << x.y() << ", " << x.z() << ")";
+      throw Invalid_input(out.str(), Invalid_input::VERTEX, get(vim, v));
+    }
+    lo = lo.cwiseMin(x);
+    hi = hi.cwiseMax(x);
+  }
+  const double diagonal = (hi - lo).norm();
+  const double largest = (std::max)(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff());
+  if(!(diagonal > tuning::extent_limit) || !(diagonal > tuning::relative_extent_limit * largest))
+  {
+    std::ostringstream out;
+    out << "the bounding box is too small (diagonal " << diagonal << ", coordinates up to "
+        << largest << "): "
+        << (diagonal > tuning::extent_limit
+              ? "doubles cannot resolve its shape to the congruence tolerance; move the mesh "
+                "near the origin"
+              : "squared lengths underflow; scale the mesh up");
+    throw Invalid_input(out.str());
+  }
+  return diagonal;
+}
+
+// Throws unless face `f` (index `fi`) is a quad or a triangle of distinct
+// vertices, with no edge of length `min_length` or less and a vector area
+// above `min_area`.
+template <typename PolygonMesh, typename NamedParameters, typename VertexIndexMap>
+void check_face(typename boost::graph_traits<PolygonMesh>::face_descriptor f, const PolygonMesh& pm,
+                const NamedParameters& np, std::size_t fi, const VertexIndexMap& vim,
+                double min_length, double min_area)
+{
+  auto fail = [&](const std::string& what) {
+    throw Invalid_input("face " + std::to_string(fi) + " " + what, Invalid_input::FACE, fi);
+  };
+  std::vector<std::size_t> ids;
+  for(auto v : CGAL::vertices_around_face(halfedge(f, pm), pm))
+    ids.push_back(get(vim, v));
+  const std::size_t n = ids.size();
+  if(n != 3 && n != 4)
+    fail("has " + std::to_string(n) +
+         " vertices; only quads and triangles are supported");
+  for(std::size_t i = 0; i < n; ++i)
+    for(std::size_t j = i + 1; j < n; ++j)
+      if(ids[i] == ids[j])
+        fail("uses vertex " + std::to_string(ids[i]) + " twice");
+
+  const Panel q = face_panel(f, pm, Quad_orientation(), np);
+  for(std::size_t k = 0; k < n; ++k)
+    if(!((q[int((k + 1) % n)] - q[int(k)]).norm() > min_length))
+      fail("has a zero-length edge between vertices " + std::to_string(ids[k]) +
+           " and " + std::to_string(ids[(k + 1) % n]));
+  if(!(0.5 * q.doubled_vector_area().norm() > min_area))
+    fail("is collapsed: its area is zero");
+}
+
 } // namespace internal
 
 /// \ingroup PkgTilableSurfacesRef
@@ -246,92 +361,23 @@ template <typename PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 void validate_quad_mesh(const PolygonMesh& pm,
                         const CGAL_NP_CLASS& np = parameters::default_values())
 {
-  const auto vpm = internal::const_vertex_point_map(pm, np);
-
   if(faces(pm).empty())
     throw Invalid_input("the mesh has no face");
   const std::string defect = internal::structure_defect(pm);
   if(!defect.empty())
     throw Invalid_input("the mesh is not a valid polygon mesh (broken halfedge structure: " +
                         defect + ")");
-  // Checked before any index is used: other indices would address arrays
-  // of num_vertices() and num_faces() elements out of bounds.
+  const auto vpm = internal::const_vertex_point_map(pm, np);
   const auto vim = CGAL::get_initialized_vertex_index_map(pm, np);
   const auto fim = CGAL::get_initialized_face_index_map(pm, np);
-  bool compact = internal::is_compact_index_map(vertices(pm), vim, num_vertices(pm)) &&
-                 internal::is_compact_index_map(faces(pm), fim, num_faces(pm));
-  if constexpr(internal::Has_edge_indices<PolygonMesh>::value)
-  {
-    // Where the mesh keeps halfedge ids (Polyhedron_items_with_id_3), they
-    // give the edge indices: this numbers them if they are not numbered yet.
-    CGAL::get_initialized_halfedge_index_map(pm);
-    compact = compact && internal::is_compact_index_map(
-                           edges(pm), CGAL::get_initialized_edge_index_map(pm), num_edges(pm));
-  }
-  if(!compact)
-    throw Invalid_input("the vertex, edge or face indices are not 0..n-1 (a Surface_mesh with removed "
-                        "elements must be garbage-collected first: collect_garbage())");
-
-  Eigen::Vector3d lo = Eigen::Vector3d::Constant((std::numeric_limits<double>::max)());
-  Eigen::Vector3d hi = -lo;
-  for(auto v : vertices(pm))
-  {
-    const Eigen::Vector3d x = internal::to_eigen(get(vpm, v));
-    const bool finite = x.allFinite();
-    if(!finite || x.cwiseAbs().maxCoeff() > internal::coordinate_limit)
-    {
-      std::ostringstream out;
-      out << "vertex " << get(vim, v) << " has a "
-          << (finite ? "coordinate beyond 1e150 in absolute value, whose square overflows ("
-                     : "non-finite coordinate (")
-          << x.x() << ", " << x.y() << ", " << x.z() << ")";
-      throw Invalid_input(out.str(), Invalid_input::VERTEX, get(vim, v));
-    }
-    lo = lo.cwiseMin(x);
-    hi = hi.cwiseMax(x);
-  }
-  const double diagonal = (hi - lo).norm();
-  const double largest = (std::max)(lo.cwiseAbs().maxCoeff(), hi.cwiseAbs().maxCoeff());
-  if(!(diagonal > internal::extent_limit) || !(diagonal > internal::relative_extent_limit * largest))
-  {
-    std::ostringstream out;
-    out << "the bounding box is too small (diagonal " << diagonal << ", coordinates up to "
-        << largest << "): "
-        << (diagonal > internal::extent_limit
-              ? "doubles cannot resolve its shape to the congruence tolerance; move the mesh "
-                "near the origin"
-              : "squared lengths underflow; scale the mesh up");
-    throw Invalid_input(out.str());
-  }
-  const double min_length = 1e-12 * diagonal;
-  const double min_area = 1e-12 * diagonal * diagonal;
-
+  // Checked before any index is used: other indices would address arrays
+  // of num_vertices() and num_faces() elements out of bounds.
+  internal::check_index_maps(pm, vim, fim);
+  const double diagonal = internal::checked_bbox_diagonal(pm, vpm, vim);
+  const double min_length = internal::tuning::min_edge_length * diagonal;
+  const double min_area = internal::tuning::min_face_area * diagonal * diagonal;
   for(auto f : faces(pm))
-  {
-    const std::size_t fi = get(fim, f);
-    auto fail = [&](const std::string& what) {
-      throw Invalid_input("face " + std::to_string(fi) + " " + what, Invalid_input::FACE, fi);
-    };
-    std::vector<std::size_t> ids;
-    for(auto v : CGAL::vertices_around_face(halfedge(f, pm), pm))
-      ids.push_back(get(vim, v));
-    const std::size_t n = ids.size();
-    if(n != 3 && n != 4)
-      fail("has " + std::to_string(n) +
-           " vertices; only quads and triangles are supported");
-    for(std::size_t i = 0; i < n; ++i)
-      for(std::size_t j = i + 1; j < n; ++j)
-        if(ids[i] == ids[j])
-          fail("uses vertex " + std::to_string(ids[i]) + " twice");
-
-    const Panel q = face_panel(f, pm, Quad_orientation(), np);
-    for(std::size_t k = 0; k < n; ++k)
-      if(!((q[int((k + 1) % n)] - q[int(k)]).norm() > min_length))
-        fail("has a zero-length edge between vertices " + std::to_string(ids[k]) +
-             " and " + std::to_string(ids[(k + 1) % n]));
-    if(!(0.5 * q.doubled_vector_area().norm() > min_area))
-      fail("is collapsed: its area is zero");
-  }
+    internal::check_face(f, pm, np, get(fim, f), vim, min_length, min_area);
 }
 
 } // namespace Tilable_surfaces

@@ -8,6 +8,7 @@
 /// A distinct, deterministic colour per cluster, for coloured output meshes.
 
 #include <CGAL/Tilable_surfaces/exceptions.h>
+#include <CGAL/Tilable_surfaces/internal/tuning.h>
 
 #include <CGAL/IO/Color.h>
 
@@ -36,11 +37,14 @@ inline std::vector<CGAL::IO::Color> cluster_colors(std::size_t number_of_colors)
   colors.reserve(number_of_colors);
   std::set<std::array<int, 3> > used;
   const double golden_angle = 0.38196601125010515; // (3 - sqrt(5)) / 2 turns
+  namespace T = Tilable_surfaces::internal::tuning;
   for(std::size_t i = 0; i < number_of_colors; ++i)
   {
     const double h = std::fmod(double(i) * golden_angle, 1.0) * 6.0;
-    const double s = 0.85 - 0.25 * double((i / 7) % 3);
-    const double v = 0.95 - 0.2 * double((i / 21) % 3);
+    const std::size_t saturation_level = (i / T::palette_saturation_period) % T::palette_levels,
+                      value_level = (i / T::palette_value_period) % T::palette_levels;
+    const double s = T::palette_saturation - T::palette_saturation_step * double(saturation_level);
+    const double v = T::palette_value - T::palette_value_step * double(value_level);
     const int sector = int(h) % 6;
     const double f = h - std::floor(h);
     const double p = v * (1 - s), q = v * (1 - s * f), t = v * (1 - s * (1 - f));

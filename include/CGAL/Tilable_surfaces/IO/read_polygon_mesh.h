@@ -284,57 +284,63 @@ inline void check_PLY_counts(std::istream& in, std::size_t size)
       }
 }
 
-// Why CGAL's OBJ or ASCII PLY reader may have failed on a coordinate, which
-// it does not say: the first vertex coordinate that is not a finite double
-// ("nan", "inf", or one that overflows such as "1e400"), or a vertex with
-// fewer than three coordinates. Empty if every vertex line reads (or the
-// PLY is binary): the failure was elsewhere.
-inline std::string unreadable_coordinate(std::istream& in, std::size_t size, const std::string& format)
+// What is wrong with the coordinates of vertex `vertex` (on line
+// `line_number`), or an empty string: fewer than 3, or one that is not a
+// finite double ("nan", "inf", or one that overflows such as "1e400").
+inline std::string coordinate_problem(const std::vector<std::string>& coordinates, std::size_t vertex,
+                                      std::size_t line_number)
 {
-  in.clear();
-  in.seekg(0, std::ios::beg);
-  std::size_t line_number = 0, vertex = 0;
-  auto check = [&](const std::vector<std::string>& coordinates) -> std::string {
-    const std::string where = "vertex " + std::to_string(vertex) + " (line " + std::to_string(line_number) + ")";
-    if(coordinates.size() < 3)
-      return where + " has fewer than 3 coordinates";
-    for(const std::string& token : coordinates)
-    {
-      char* end = nullptr;
-      const double x = std::strtod(token.c_str(), &end);
-      if(end != token.c_str() + token.size())
-        return where + " has '" + token + "', not a number";
-      if(!std::isfinite(x))
-        return where + " has '" + token + "', " +
-               (std::isnan(x) || token.find_first_of("iInN") != std::string::npos
-                  ? std::string("not a finite number")
-                  : std::string("too large for a double"));
-    }
-    return std::string();
-  };
-  std::string line;
-  if(format == "obj")
+  const std::string where = "vertex " + std::to_string(vertex) + " (line " + std::to_string(line_number) + ")";
+  if(coordinates.size() < 3)
+    return where + " has fewer than 3 coordinates";
+  for(const std::string& token : coordinates)
   {
-    while(std::getline(in, line))
-    {
-      ++line_number;
-      std::vector<std::string> tokens = line_tokens(line);
-      if(tokens.empty() || tokens[0] != "v")
-        continue;
-      tokens.erase(tokens.begin());
-      if(tokens.size() > 3)
-        tokens.resize(3);  // an optional weight or colour follows
-      const std::string problem = check(tokens);
-      if(!problem.empty())
-        return problem;
-      ++vertex;
-    }
-    return std::string();
+    char* end = nullptr;
+    const double x = std::strtod(token.c_str(), &end);
+    if(end != token.c_str() + token.size())
+      return where + " has '" + token + "', not a number";
+    if(!std::isfinite(x))
+      return where + " has '" + token + "', " +
+             (std::isnan(x) || token.find_first_of("iInN") != std::string::npos
+                ? std::string("not a finite number")
+                : std::string("too large for a double"));
   }
+  return std::string();
+}
+
+// The first coordinate_problem() of the "v" lines of an OBJ file, read from
+// its start.
+inline std::string unreadable_OBJ_coordinate(std::istream& in)
+{
+  std::size_t line_number = 0, vertex = 0;
+  std::string line;
+  while(std::getline(in, line))
+  {
+    ++line_number;
+    std::vector<std::string> tokens = line_tokens(line);
+    if(tokens.empty() || tokens[0] != "v")
+      continue;
+    tokens.erase(tokens.begin());
+    if(tokens.size() > 3)
+      tokens.resize(3);  // an optional weight or colour follows
+    const std::string problem = coordinate_problem(tokens, vertex, line_number);
+    if(!problem.empty())
+      return problem;
+    ++vertex;
+  }
+  return std::string();
+}
+
+// The first coordinate_problem() of the vertex lines of an ASCII PLY file of
+// `size` bytes, read from its start; empty for a binary one.
+inline std::string unreadable_PLY_coordinate(std::istream& in, std::size_t size)
+{
   PLY_header header;
   try { header = read_PLY_header(in, size); } catch(const File_error&) { return std::string(); }
   if(header.format != "ascii")
     return std::string();
+  std::size_t line_number = 0, vertex = 0;
+  std::string line;
   std::streamoff body = in.tellg();
   in.seekg(0, std::ios::beg);
   for(std::streamoff read = 0; read < body && std::getline(in, line); read = in.tellg())
@@ -346,12 +352,77 @@ inline std::string unreadable_coordinate(std::istream& in, std::size_t size, con
       ++line_number;
       if(e.name != "vertex")
         continue;
-      const std::string problem = check(line_tokens(line));
+      const std::string problem = coordinate_problem(line_tokens(line), vertex, line_number);
       if(!problem.empty())
         return problem;
       ++vertex;
     }
   return std::string();
+}
+
+// Why CGAL's OBJ or ASCII PLY reader may have failed on a coordinate, which
+// it does not say: the first vertex coordinate that is not a finite double,
+// or a vertex with fewer than three coordinates. Empty if every vertex line
+// reads (or the PLY is binary): the failure was elsewhere.
+inline std::string unreadable_coordinate(std::istream& in, std::size_t size, const std::string& format)
+{
+  in.clear();
+  in.seekg(0, std::ios::beg);
+  return format == "obj" ? unreadable_OBJ_coordinate(in) : unreadable_PLY_coordinate(in, size);
+}
+
+// Reads the points and polygons of a file in `format` ("off", "obj" or "ply"),
+// checking every count first (read_OFF_soup(), check_PLY_counts()); throws
+// Invalid_input naming the source `name`.
+template <typename Point>
+void read_polygon_soup(std::istream& in, const std::string& format, const std::string& name,
+                       std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons)
+{
+  in.seekg(0, std::ios::end);
+  const std::streamoff end = in.tellg();
+  in.seekg(0, std::ios::beg);
+  const std::size_t size = end > 0 ? std::size_t(end) : 0;
+  try
+  {
+    if(format == "off") read_OFF_soup(in, size, points, polygons);
+    if(format == "ply") check_PLY_counts(in, size);
+  }
+  catch(const File_error& e)
+  {
+    throw Invalid_input("'" + name + "': " + e.what());
+  }
+  in.clear();
+  in.seekg(0, std::ios::beg);
+
+  const auto quiet = CGAL::parameters::verbose(false);
+  const bool read = format == "off" ? true  // read above
+                  : format == "obj" ? CGAL::IO::read_OBJ(in, points, polygons, quiet)
+                                    : CGAL::IO::read_PLY(in, points, polygons, quiet);
+  if(!read)
+  {
+    const std::string coordinate = unreadable_coordinate(in, size, format);
+    throw Invalid_input("'" + name + "' is not a readable polygon mesh (" +
+                        (coordinate.empty() ? std::string("corrupt or truncated file") : coordinate) + ")");
+  }
+}
+
+// Which of the `number_of_points` points the polygons use; throws
+// Invalid_input for a reference to no point.
+inline std::vector<bool> used_points(std::size_t number_of_points,
+                                     const std::vector<std::vector<std::size_t> >& polygons,
+                                     const std::string& name)
+{
+  std::vector<bool> used(number_of_points, false);
+  for(std::size_t f = 0; f < polygons.size(); ++f)
+    for(std::size_t v : polygons[f])
+    {
+      if(v >= number_of_points)
+        throw Invalid_input("'" + name + "': face " + std::to_string(f) + " uses vertex " +
+                            std::to_string(v) + " but there are " + std::to_string(number_of_points) +
+                            " vertices", Invalid_input::FACE, f);
+      used[v] = true;
+    }
+  return used;
 }
 
 inline std::string lower_extension(const std::string& path)
@@ -400,44 +471,10 @@ Read_report read_quad_mesh(std::istream& in, const std::string& format, PolygonM
   CGAL::clear(pm);
   if(format != "off" && format != "obj" && format != "ply")
     throw Invalid_input("'" + name + "' is not an OFF, OBJ or PLY file (by its extension)");
-  in.seekg(0, std::ios::end);
-  const std::streamoff end = in.tellg();
-  in.seekg(0, std::ios::beg);
-  const std::size_t size = end > 0 ? std::size_t(end) : 0;
   std::vector<Point> points;
   std::vector<std::vector<std::size_t> > polygons;
-  try
-  {
-    if(format == "off") internal::read_OFF_soup(in, size, points, polygons);
-    if(format == "ply") internal::check_PLY_counts(in, size);
-  }
-  catch(const internal::File_error& e)
-  {
-    throw Invalid_input("'" + name + "': " + e.what());
-  }
-  in.clear();
-  in.seekg(0, std::ios::beg);
-
-  const auto quiet = CGAL::parameters::verbose(false);
-  const bool read = format == "off" ? true  // read above
-                  : format == "obj" ? CGAL::IO::read_OBJ(in, points, polygons, quiet)
-                                    : CGAL::IO::read_PLY(in, points, polygons, quiet);
-  if(!read)
-  {
-    const std::string coordinate = internal::unreadable_coordinate(in, size, format);
-    throw Invalid_input("'" + name + "' is not a readable polygon mesh (" +
-                        (coordinate.empty() ? std::string("corrupt or truncated file") : coordinate) + ")");
-  }
-  std::vector<bool> used(points.size(), false);
-  for(std::size_t f = 0; f < polygons.size(); ++f)
-    for(std::size_t v : polygons[f])
-    {
-      if(v >= points.size())
-        throw Invalid_input("'" + name + "': face " + std::to_string(f) + " uses vertex " +
-                            std::to_string(v) + " but there are " + std::to_string(points.size()) +
-                            " vertices", Invalid_input::FACE, f);
-      used[v] = true;
-    }
+  internal::read_polygon_soup(in, format, name, points, polygons);
+  const std::vector<bool> used = internal::used_points(points.size(), polygons, name);
   if(polygons.empty())
     throw Invalid_input("'" + name + "' has no face");
   if(!CGAL::Polygon_mesh_processing::is_polygon_soup_a_polygon_mesh(polygons))

@@ -8,6 +8,7 @@
 /// A JSON report of everything `make_k_set_tilable()` measured.
 
 #include <CGAL/Tilable_surfaces/K_set_tilable_result.h>
+#include <CGAL/Tilable_surfaces/defaults.h>
 
 #include <nlohmann/json.hpp>
 
@@ -46,6 +47,49 @@ inline nlohmann::json tile_count_trials_json(const std::vector<Tile_count_trial>
   return rows;
 }
 
+namespace internal {
+
+// The "fidelity" entry of tilability_report_json(): the distances between the
+// result and the input.
+inline nlohmann::json fidelity_json(const Tilability_measure& m)
+{
+  return {{"hausdorff", {{"max", m.hausdorff_distance}, {"mean", m.mean_symmetric_distance}}},
+          {"result_to_input", {{"max", m.max_approximation_error}, {"mean", m.mean_approximation_error}}},
+          {"input_to_result", {{"max", m.max_coverage_error}, {"mean", m.mean_coverage_error}}},
+          {"hausdorff_in_edge_lengths",
+           {{"max", m.in_input_edge_lengths(m.hausdorff_distance)},
+            {"mean", m.in_input_edge_lengths(m.mean_symmetric_distance)}}},
+          {"length_scale", "input bounding-box diagonal"},
+          {"input_bbox_diagonal", m.input_bbox_diagonal},
+          {"input_mean_edge_length", m.input_mean_edge_length},
+          {"self_intersecting_face_pairs", m.self_intersecting_face_pairs}};
+}
+
+// The "clustering" entry of tilability_report_json().
+inline nlohmann::json clustering_json(const K_set_tilable_result& r)
+{
+  return {{"path", r.clustering.path == EXACT_PATH ? "exact" : "descriptor"},
+          {"initial_clusters", r.clustering.number_of_initial_clusters},
+          {"total_weight", r.clustering.total_weight},
+          {"weights_are_exact", r.clustering.weights_are_exact},
+          {"degree_of_flexibility", r.clustering.degree_of_flexibility},
+          {"choice", r.clustering.choice_reason},
+          {"edit_rounds", r.clustering.number_of_edit_rounds}};
+}
+
+// The "time_seconds" entry of tilability_report_json().
+inline nlohmann::json time_json(const K_set_tilable_result& r)
+{
+  return {{"validation", r.validation_time},
+          {"clustering", r.clustering_time},
+          {"optimization_setup", r.optimization.setup_time},
+          {"optimization_solve", r.optimization.solve_time},
+          {"measurement", r.optimization.measure_time},
+          {"total", r.total_time}};
+}
+
+} // namespace internal
+
 /// \ingroup PkgTilableSurfacesRef
 /// The report of a run as JSON: K, degree of flexibility, cluster sizes,
 /// the kind of each cluster's tile (`tile_kinds`: `quad` or `triangle`) and
@@ -65,7 +109,7 @@ inline nlohmann::json tile_count_trials_json(const std::vector<Tile_count_trial>
 /// (`tried_K`, empty when K was given). Callers add what only they know
 /// (input name, parameters) to the returned object.
 inline nlohmann::json tilability_report_json(const K_set_tilable_result& r,
-                                              double congruence_tolerance = 1e-6)
+                                              double congruence_tolerance = defaults::congruence_tolerance)
 {
   const Tilability_measure& m = r.optimization.measure;
   std::vector<std::string> kinds;
@@ -93,17 +137,7 @@ inline nlohmann::json tilability_report_json(const K_set_tilable_result& r,
       {"tolerance", congruence_tolerance},
       {"length_scale", "mean edge length"},
       {"mean_edge_length", m.mean_edge_length}}},
-    {"fidelity",
-     {{"hausdorff", {{"max", m.hausdorff_distance}, {"mean", m.mean_symmetric_distance}}},
-      {"result_to_input", {{"max", m.max_approximation_error}, {"mean", m.mean_approximation_error}}},
-      {"input_to_result", {{"max", m.max_coverage_error}, {"mean", m.mean_coverage_error}}},
-      {"hausdorff_in_edge_lengths",
-       {{"max", m.in_input_edge_lengths(m.hausdorff_distance)},
-        {"mean", m.in_input_edge_lengths(m.mean_symmetric_distance)}}},
-      {"length_scale", "input bounding-box diagonal"},
-      {"input_bbox_diagonal", m.input_bbox_diagonal},
-      {"input_mean_edge_length", m.input_mean_edge_length},
-      {"self_intersecting_face_pairs", m.self_intersecting_face_pairs}}},
+    {"fidelity", internal::fidelity_json(m)},
     {"displacement", {{"max", m.max_displacement}, {"mean", m.mean_displacement}}},
     {"normalized_terms", energy_terms_json(m.normalized_terms)},
     {"tilable", r.is_tilable()},
@@ -112,22 +146,9 @@ inline nlohmann::json tilability_report_json(const K_set_tilable_result& r,
       {"converged", r.optimization.converged},
       {"ending", r.optimization.ending()},
       {"objective", r.optimization.objective}}},
-    {"clustering",
-     {{"path", r.clustering.path == EXACT_PATH ? "exact" : "descriptor"},
-      {"initial_clusters", r.clustering.number_of_initial_clusters},
-      {"total_weight", r.clustering.total_weight},
-      {"weights_are_exact", r.clustering.weights_are_exact},
-      {"degree_of_flexibility", r.clustering.degree_of_flexibility},
-      {"choice", r.clustering.choice_reason},
-      {"edit_rounds", r.clustering.number_of_edit_rounds}}},
+    {"clustering", internal::clustering_json(r)},
     {"tried_K", tile_count_trials_json(r.trials)},
-    {"time_seconds",
-     {{"validation", r.validation_time},
-      {"clustering", r.clustering_time},
-      {"optimization_setup", r.optimization.setup_time},
-      {"optimization_solve", r.optimization.solve_time},
-      {"measurement", r.optimization.measure_time},
-      {"total", r.total_time}}}};
+    {"time_seconds", internal::time_json(r)}};
 }
 
 } // namespace IO

@@ -10,6 +10,7 @@
 /// count and the worst deviation of an instance, all in the mesh's units.
 /// CSV, or JSON (with nlohmann::json, Debian's `nlohmann-json3-dev`).
 
+#include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/exceptions.h>
 #include <CGAL/Tilable_surfaces/measure.h>
 
@@ -36,15 +37,16 @@ struct Tile_row
   std::array<double, 2> diagonals;
   double signed_volume;
   double planarity;
-  bool is_planar; // diagonals within 1e-6 of the mean edge of each other
+  bool is_planar; // diagonals within the default congruence tolerance of the mean edge
 };
 
 inline Tile_row tile_row(const Tile& t)
 {
   const std::array<double, 4> edges = edge_lengths(t.corners);
   const double mean_edge = (edges[0] + edges[1] + edges[2] + edges[3]) / double(t.corners.size());
+  const bool is_planar = diagonal_distance(t.corners) <= defaults::congruence_tolerance * mean_edge;
   return Tile_row{edges, diagonal_lengths(t.corners), Tilable_surfaces::signed_volume(t.corners),
-                  planarity_defect(t.corners), diagonal_distance(t.corners) <= 1e-6 * mean_edge};
+                  planarity_defect(t.corners), is_planar};
 }
 
 // Refuses a catalog with a non-finite number, before anything is written.

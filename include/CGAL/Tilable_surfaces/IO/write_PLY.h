@@ -32,6 +32,61 @@ namespace CGAL {
 namespace Tilable_surfaces {
 namespace IO {
 
+namespace internal {
+
+typedef CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> Output_mesh;
+
+// A copy of `pm` as a Surface_mesh, so that CGAL's writer emits the
+// properties, and the pairs (face of `pm`, its copy). It is built face by
+// face (not with copy_face_graph(), which may start a face's vertex cycle
+// elsewhere) because orientations refer to v0 of each face.
+template <typename PolygonMesh, typename VertexPointMap>
+Output_mesh output_mesh(const PolygonMesh& pm, const VertexPointMap& vpm,
+                        std::vector<std::pair<typename boost::graph_traits<PolygonMesh>::face_descriptor,
+                                              Output_mesh::Face_index> >& face_pairs)
+{
+  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
+  Output_mesh out;
+  std::unordered_map<vertex_descriptor, Output_mesh::Vertex_index> vertex_image;
+  for(vertex_descriptor v : vertices(pm))
+  {
+    const Eigen::Vector3d p = Tilable_surfaces::internal::to_eigen(get(vpm, v));
+    vertex_image.emplace(v, out.add_vertex(Output_mesh::Point(p.x(), p.y(), p.z())));
+  }
+  std::vector<Output_mesh::Vertex_index> corners;
+  for(auto f : faces(pm))
+  {
+    corners.clear();
+    for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, pm), pm))
+      corners.push_back(vertex_image.at(v));
+    face_pairs.emplace_back(f, out.add_face(corners));
+  }
+  return out;
+}
+
+// Adds to `out` the face properties of write_tiled_PLY(): cluster,
+// orientation, corners and colour.
+template <typename FacePairs, typename ClusterMap, typename OrientationMap>
+void add_face_properties(Output_mesh& out, const FacePairs& face_pairs, ClusterMap clusters,
+                         OrientationMap orientations, const std::vector<CGAL::IO::Color>& colors)
+{
+  auto cluster_property = out.add_property_map<Output_mesh::Face_index, int>("f:cluster", 0).first;
+  auto orientation_property =
+    out.add_property_map<Output_mesh::Face_index, std::uint8_t>("f:orientation", 0).first;
+  auto corners_property = out.add_property_map<Output_mesh::Face_index, std::uint8_t>("f:corners", 4).first;
+  auto color_property = out.add_property_map<Output_mesh::Face_index, CGAL::IO::Color>("f:color").first;
+  for(const auto& fp : face_pairs)
+  {
+    const std::size_t c = std::size_t(get(clusters, fp.first));
+    cluster_property[fp.second] = int(c);
+    orientation_property[fp.second] = std::uint8_t(int(get(orientations, fp.first)));
+    corners_property[fp.second] = std::uint8_t(out.degree(fp.second));
+    color_property[fp.second] = colors[c];
+  }
+}
+
+} // namespace internal
+
 /// \ingroup PkgTilableSurfacesRef
 /// Writes `pm` to `os` in PLY, vertices and faces in the order of
 /// `vertices(pm)` and `faces(pm)`, with the face properties `cluster` (int),
@@ -57,7 +112,6 @@ bool write_tiled_PLY(std::ostream& os, const PolygonMesh& pm,
 {
   using parameters::choose_parameter;
   using parameters::get_parameter;
-  typedef CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> Output_mesh;
   typedef typename boost::graph_traits<PolygonMesh>::face_descriptor face_descriptor;
 
   const auto clusters = get_parameter(np, internal_np::face_cluster);
@@ -72,43 +126,11 @@ bool write_tiled_PLY(std::ostream& os, const PolygonMesh& pm,
   Tilable_surfaces::internal::check_face_labels(pm, CGAL::get_initialized_face_index_map(pm, np),
                                                 clusters, orientations);
 
-  // Rebuilding a Surface_mesh lets CGAL's writer emit the properties. It is
-  // built face by face (not with copy_face_graph(), which may start a face's
-  // vertex cycle elsewhere) because orientations refer to v0 of each face.
-  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
-  Output_mesh out;
-  std::unordered_map<vertex_descriptor, Output_mesh::Vertex_index> vertex_image;
-  for(vertex_descriptor v : vertices(pm))
-  {
-    const Eigen::Vector3d p = Tilable_surfaces::internal::to_eigen(get(vpm, v));
-    vertex_image.emplace(v, out.add_vertex(Output_mesh::Point(p.x(), p.y(), p.z())));
-  }
-  std::vector<std::pair<face_descriptor, Output_mesh::Face_index> > face_pairs;
-  std::vector<Output_mesh::Vertex_index> corners;
-  for(face_descriptor f : faces(pm))
-  {
-    corners.clear();
-    for(vertex_descriptor v : CGAL::vertices_around_face(halfedge(f, pm), pm))
-      corners.push_back(vertex_image.at(v));
-    face_pairs.emplace_back(f, out.add_face(corners));
-  }
-
+  std::vector<std::pair<face_descriptor, internal::Output_mesh::Face_index> > face_pairs;
+  internal::Output_mesh out = internal::output_mesh(pm, vpm, face_pairs);
   const std::vector<CGAL::IO::Color> colors =
     cluster_colors(internal::number_of_face_clusters(pm, clusters));
-
-  auto cluster_property = out.add_property_map<Output_mesh::Face_index, int>("f:cluster", 0).first;
-  auto orientation_property =
-    out.add_property_map<Output_mesh::Face_index, std::uint8_t>("f:orientation", 0).first;
-  auto corners_property = out.add_property_map<Output_mesh::Face_index, std::uint8_t>("f:corners", 4).first;
-  auto color_property = out.add_property_map<Output_mesh::Face_index, CGAL::IO::Color>("f:color").first;
-  for(const auto& fp : face_pairs)
-  {
-    const std::size_t c = std::size_t(get(clusters, fp.first));
-    cluster_property[fp.second] = int(c);
-    orientation_property[fp.second] = std::uint8_t(int(get(orientations, fp.first)));
-    corners_property[fp.second] = std::uint8_t(out.degree(fp.second));
-    color_property[fp.second] = colors[c];
-  }
+  internal::add_face_properties(out, face_pairs, clusters, orientations, colors);
 
   if(binary)
     CGAL::IO::set_binary_mode(os);

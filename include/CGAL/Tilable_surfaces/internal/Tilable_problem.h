@@ -102,36 +102,16 @@ inline Panel instance(const Tilable_problem& problem, const Point_matrix& points
   return Panel{{corner(0), corner(1), corner(2), corner(3)}};
 }
 
-// The clustering of `pm` read from the named parameters `face_cluster_map`
-// and `face_orientation_map` (both required), with K = 1 + the largest id.
-// Throws Invalid_input for ids or orientations out of range; the mesh itself
-// is checked by validate_quad_mesh() beforehand.
-template <typename PolygonMesh, typename NamedParameters>
-Tilable_problem make_tilable_problem(const PolygonMesh& pm, const NamedParameters& np)
+// Fills the corners and clusters of the faces, the edges and the edge groups
+// (one per edge-sharing component). The faces in index order, the edges in the
+// order the faces reach them: the groups' first items and the solvers'
+// rounding follow these orders, which the index map, not the mesh's storage,
+// decides.
+template <typename PolygonMesh, typename VertexIndexMap, typename FaceIndexMap>
+void add_faces_and_edge_groups(const PolygonMesh& pm, const VertexIndexMap& vim, const FaceIndexMap& fim,
+                               const Face_clustering& clustering, const Edge_sharing_graph<PolygonMesh>& graph,
+                               Tilable_problem& problem)
 {
-  using parameters::get_parameter;
-  namespace TS_np = CGAL::Tilable_surfaces::internal_np;
-  require_face_maps<NamedParameters>();
-  const auto cluster_map = get_parameter(np, TS_np::face_cluster);
-  const auto orientation_map = get_parameter(np, TS_np::face_orientation);
-  const auto vpm = internal::const_vertex_point_map(pm, np);
-  const auto vim = CGAL::get_initialized_vertex_index_map(pm, np);
-  const auto fim = CGAL::get_initialized_face_index_map(pm, np);
-
-  Tilable_problem problem;
-  problem.allow_mirror = parameters::choose_parameter(get_parameter(np, TS_np::orientation_policy),
-                                                      defaults::orientation_policy) == ALLOW_MIRRORED_PANELS;
-  problem.planar =
-    parameters::choose_parameter(get_parameter(np, TS_np::planar_tiles), defaults::planar_tiles);
-  const Face_clustering clustering = read_face_clustering(pm, fim, cluster_map, orientation_map);
-  problem.number_of_clusters = clustering.number_of_clusters;
-  const Edge_sharing_graph<PolygonMesh> graph(Validated_mesh(true), pm, fim, vpm, clustering);
-  problem.degree_of_flexibility = graph.degree_of_flexibility();
-  problem.points = read_points(pm, vpm, vim);
-
-  // The faces in index order, the edges in the order the faces reach them:
-  // the groups' first items and the solvers' rounding follow these orders,
-  // which the index map, not the mesh's storage, decides.
   std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor> face_of(num_faces(pm));
   for(auto f : faces(pm))
     face_of[std::size_t(get(fim, f))] = f;
@@ -166,7 +146,12 @@ Tilable_problem make_tilable_problem(const PolygonMesh& pm, const NamedParameter
     problem.edge_groups.items.insert(problem.edge_groups.items.end(), group.begin(), group.end());
     problem.edge_groups.close_group();
   }
+}
 
+// Fills the diagonal and volume groups: per quad cluster, its instances'
+// diagonals t0t2, then t1t3, and their corners.
+inline void add_cluster_groups(Tilable_problem& problem)
+{
   std::vector<std::vector<std::size_t>> by_cluster(problem.number_of_clusters);
   for(std::size_t i = 0; i < problem.face_cluster.size(); ++i)
     by_cluster[problem.face_cluster[i]].push_back(i);
@@ -194,6 +179,36 @@ Tilable_problem make_tilable_problem(const PolygonMesh& pm, const NamedParameter
     }
     problem.volume_groups.close_group();
   }
+}
+
+// The clustering of `pm` read from the named parameters `face_cluster_map`
+// and `face_orientation_map` (both required), with K = 1 + the largest id.
+// Throws Invalid_input for ids or orientations out of range; the mesh itself
+// is checked by validate_quad_mesh() beforehand.
+template <typename PolygonMesh, typename NamedParameters>
+Tilable_problem make_tilable_problem(const PolygonMesh& pm, const NamedParameters& np)
+{
+  using parameters::get_parameter;
+  namespace TS_np = CGAL::Tilable_surfaces::internal_np;
+  require_face_maps<NamedParameters>();
+  const auto cluster_map = get_parameter(np, TS_np::face_cluster);
+  const auto orientation_map = get_parameter(np, TS_np::face_orientation);
+  const auto vpm = internal::const_vertex_point_map(pm, np);
+  const auto vim = CGAL::get_initialized_vertex_index_map(pm, np);
+  const auto fim = CGAL::get_initialized_face_index_map(pm, np);
+
+  Tilable_problem problem;
+  problem.allow_mirror = parameters::choose_parameter(get_parameter(np, TS_np::orientation_policy),
+                                                      defaults::orientation_policy) == ALLOW_MIRRORED_PANELS;
+  problem.planar =
+    parameters::choose_parameter(get_parameter(np, TS_np::planar_tiles), defaults::planar_tiles);
+  const Face_clustering clustering = read_face_clustering(pm, fim, cluster_map, orientation_map);
+  problem.number_of_clusters = clustering.number_of_clusters;
+  const Edge_sharing_graph<PolygonMesh> graph(Validated_mesh(true), pm, fim, vpm, clustering);
+  problem.degree_of_flexibility = graph.degree_of_flexibility();
+  problem.points = read_points(pm, vpm, vim);
+  add_faces_and_edge_groups(pm, vim, fim, clustering, graph, problem);
+  add_cluster_groups(problem);
   return problem;
 }
 

@@ -19,6 +19,153 @@ namespace tuning {
 // Shape analysis, optimization and measurement
 // ---------------------------------------------------------------------------
 
+// Guards a division or a relative test against a zero denominator; far below
+// any value the normalized positions produce.
+constexpr double division_guard = 1e-300;
+
+// The paper's conjugate gradient (conjugate_gradient.h), on positions
+// normalized to a unit bounding-box diagonal.
+
+// First trial step, as the largest vertex move in mean edge lengths: a small
+// move to start the bracketing from; later searches start from the last step.
+constexpr double cg_first_step = 0.01;
+// Energy evaluations of one line search at most: bounds its cost near
+// round-off, where the Wolfe conditions may not be met.
+constexpr int cg_line_search_evaluations = 40;
+// Strong Wolfe sufficient decrease c1 (Nocedal & Wright's usual value).
+constexpr double cg_sufficient_decrease = 1e-4;
+// Strong Wolfe curvature condition c2: 0.1, as accurate as Polak-Ribiere needs.
+constexpr double cg_curvature_condition = 0.1;
+// Growth of the trial step until the minimum is bracketed.
+constexpr int cg_bracket_growth = 4;
+// The zoom's trial step stays this fraction of the bracket away from its ends
+// (the inner 80%), so the bracket keeps shrinking.
+constexpr double cg_bracket_margin = 0.1;
+// A bracket narrower than this fraction of its best step is at round-off.
+constexpr double cg_min_bracket_width = 1e-15;
+
+// The default solver (constrained_gauss_newton.h, displacement_estimate.h).
+
+// b of the regularized KKT system, relative to H's unit diagonal (constraint
+// rows are O(1) per unit move): large, so that the constraints dominate, and
+// finite, so that redundant rows are harmless.
+constexpr double kkt_regularization = 1e6;
+// Multiplier passes on one factorization at most; they stop earlier once the
+// linearized residual meets the accuracy asked.
+constexpr int multiplier_passes = 20;
+// Relative accuracy of the multiplier passes (at most, with the exact
+// Hessian, where it tightens with |c|), and of the displacement prediction.
+constexpr double multiplier_accuracy = 1e-3;
+// The congruence error is measured for the visitor every so many iterations:
+// a Procrustes fit per cluster is too dear for every one.
+constexpr int sqp_measure_period = 10;
+// Starting trust region on the largest vertex move, in mean edge lengths: far
+// from a solution a full step can fold the mesh.
+constexpr double sqp_initial_radius = 0.5;
+// Floor of the trust region, in mean edge lengths.
+constexpr double sqp_min_radius = 1e-3;
+// The trust region grows by this factor after a full step.
+constexpr int sqp_radius_growth = 2;
+// ... and shrinks by this factor after a shortened one.
+constexpr double sqp_radius_shrink = 0.5;
+// Inertia control: the first shift of an indefinite KKT matrix.
+constexpr double sqp_first_shift = 1e-4;
+// Inertia control: growth of the shift until the matrix is positive definite.
+constexpr double sqp_shift_growth = 10;
+// Inertia control: the shift at which the SQP phase gives up.
+constexpr double sqp_max_shift = 1e8;
+// Inertia control: decay of the shift from one iteration to the next.
+constexpr double sqp_shift_decay = 3;
+// Inertia control: below this, the decayed shift is floored.
+constexpr double sqp_min_shift = 1e-8;
+// Progress of a phase: an error below this fraction of the best so far.
+constexpr double solver_progress = 0.9;
+// Gauss-Newton iterations without progress that end the SQP phase.
+constexpr int gauss_newton_patience = 5;
+// Exact-Hessian iterations without progress that end the SQP phase: its error
+// (stationarity included) falls less steadily.
+constexpr int exact_hessian_patience = 10;
+// Projection iterations without progress that end the projection.
+constexpr int projection_patience = 10;
+// Armijo's sufficient decrease of the l2 merit function.
+constexpr double sqp_armijo = 1e-4;
+// Backtracking factor of the line search; a step shortened below half keeps
+// the trust region of Gauss-Newton from growing.
+constexpr double sqp_backtracking = 0.5;
+// The shortest step fraction the line search tries before it refuses.
+constexpr double sqp_min_step_fraction = 1e-6;
+// The merit's penalty nu stays at least this times |lambda|, above the exact
+// penalty threshold.
+constexpr int sqp_merit_margin = 2;
+// Levenberg-Marquardt: starting theta in mu = theta |c|_inf / ell.
+constexpr double lm_initial_theta = 1;
+// Levenberg-Marquardt: floor of mu and of theta, so that round-off is not
+// amplified.
+constexpr double lm_min_damping = 1e-8;
+// Levenberg-Marquardt: theta grows or shrinks by this factor.
+constexpr double lm_damping_factor = 4;
+// Levenberg-Marquardt: theta that ends the projection (no step decreases |c|).
+constexpr double lm_max_theta = 1e12;
+// Levenberg-Marquardt: a gain ratio rho (actual over predicted decrease)
+// below this rejects the step.
+constexpr double lm_min_gain_ratio = 1e-4;
+// Levenberg-Marquardt: rho below this raises theta.
+constexpr double lm_poor_gain_ratio = 0.25;
+// Levenberg-Marquardt: rho above this lowers theta.
+constexpr double lm_good_gain_ratio = 0.75;
+// Once congruent, the projection stops at this fraction of the tolerance
+// (times the mean edge): a few cheap quadratic steps reach round-off.
+constexpr double lm_round_off_residual = 1e-3;
+
+// Input checks (validation.h), relative to a double's range and precision.
+
+// Largest accepted coordinate magnitude: squares (lengths, areas) of larger
+// ones overflow a double.
+constexpr double coordinate_limit = 1e150;
+// Smallest accepted bounding-box diagonal: squares of smaller ones underflow.
+constexpr double extent_limit = 1e-140;
+// Smallest accepted diagonal relative to the largest coordinate: below it,
+// doubles resolve the shape to less than the congruence tolerance.
+constexpr double relative_extent_limit = 1e-7;
+// Shortest accepted edge, relative to the bounding-box diagonal: far below any
+// modelled detail, far above round-off.
+constexpr double min_edge_length = 1e-12;
+// Smallest accepted vector area of a face, relative to the squared diagonal.
+constexpr double min_face_area = 1e-12;
+
+// Shape quantities and measurements (quad_shape.h, congruence_quantities.h,
+// Measure/congruence.h).
+
+// planarity_defect() takes the largest corner triangle as its base when the
+// base t0 t1 t2 has twice its area below this times the longest squared edge:
+// t0, t1, t2 are then nearly collinear and the height would be meaningless.
+constexpr double collinear_base = 1e-8;
+// epsilon in P = |N|^2 S + epsilon S^3 of volume_shape(): keeps P > 0 on a
+// collapsed quad, small against |N|^2 / S^2 of any quad of fair shape.
+constexpr double volume_shape_epsilon = 1e-4;
+// A cluster's mean S-quad with a planarity defect below this times its
+// diagonal t0t2 is planar: its mold is its own mirror image, so no instance
+// counts as mirrored.
+constexpr double planar_mold_defect = 1e-9;
+
+// The colours of the clusters (IO/cluster_colors.h): hues by the golden
+// angle, saturation and value stepping through a few levels so that large
+// counts stay distinct and every colour stays vivid and light enough.
+
+// Saturation of the first colours.
+constexpr double palette_saturation = 0.85;
+// Saturation drops by this much per level.
+constexpr double palette_saturation_step = 0.25;
+// Value (brightness) of the first colours.
+constexpr double palette_value = 0.95;
+// Value drops by this much per level.
+constexpr double palette_value_step = 0.2;
+// Levels of saturation and of value, cycled.
+constexpr int palette_levels = 3;
+// Consecutive ids that share a saturation level.
+constexpr int palette_saturation_period = 7;
+// Consecutive ids that share a value level: a full cycle of saturations.
+constexpr int palette_value_period = 21;
 
 
 // ---------------------------------------------------------------------------

@@ -12,6 +12,7 @@
 
 #include <CGAL/Tilable_surfaces/internal/Clustering/s_quad_template.h>
 #include <CGAL/Tilable_surfaces/internal/Tilable_problem.h>
+#include <CGAL/Tilable_surfaces/internal/tuning.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 
 #include <algorithm>
@@ -66,8 +67,8 @@ inline Cluster_congruence cluster_congruence(const Tilable_problem& problem, con
     const Panel mean = converged_procrustes_mean(members[c], problem.allow_mirror);
     result.s_quads[c] = canonical_frame(mean);
     // The mold of a planar S-quad is its own mirror image.
-    const bool count_mirrored =
-      problem.allow_mirror && planarity_defect(mean) > 1e-9 * (mean[2] - mean[0]).norm();
+    const bool count_mirrored = problem.allow_mirror &&
+                                planarity_defect(mean) > tuning::planar_mold_defect * (mean[2] - mean[0]).norm();
     for(const Panel& q : members[c])
     {
       result.errors[c] = (std::max)(result.errors[c], rigid_fit_deviation(mean, q, problem.allow_mirror));

@@ -7,8 +7,9 @@
 // What both solvers receive and return. They work on positions normalized to
 // a unit bounding-box diagonal, so every tolerance below is relative.
 
+#include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/internal/Tilable_problem.h>
-#include <CGAL/Tilable_surfaces/internal/Optimization/energy_terms.h>
+#include <CGAL/Tilable_surfaces/internal/Optimization/congruence_quantities.h>
 
 #include <Eigen/Core>
 #include <Eigen/Sparse>
@@ -19,12 +20,14 @@ namespace CGAL {
 namespace Tilable_surfaces {
 namespace internal {
 
+// The defaults are those of the default solver (defaults.h);
+// Optimization_setup sets every field from the named parameters.
 struct Solver_settings
 {
   Energy_terms weights;             // mu1..mu5
-  int max_iterations = 100;
-  double congruence_tolerance = 1e-6;
-  double convergence_tolerance = 1e-9;
+  int max_iterations = default_number_of_iterations(defaults::solver);
+  double congruence_tolerance = defaults::congruence_tolerance;
+  double convergence_tolerance = default_convergence_tolerance(defaults::solver);
 };
 
 // The data of one solve: X0 and D are fixed, X is updated in place.

@@ -5,8 +5,8 @@
 #define CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_CONGRUENCE_CONSTRAINTS_H
 
 // The equality constraints c(X) = 0 of the default solver, one row per
-// consecutive pair (a, b) of a group of energy_terms.h, in length units with
-// the length scale `ell`:
+// consecutive pair (a, b) of a group of congruence_quantities.h, in length
+// units with the length scale `ell`:
 // - squared lengths: ell (q_a - q_b) / (q_a + q_b);
 // - volumes: 6 ell (w_a - w_b), w = scale_free_volume(), or ell (w_a - w_b),
 //   w = volume_shape() (Volume_quantity);
@@ -22,7 +22,7 @@
 // curvature, without which the SQP steps converge only linearly.
 
 #include <CGAL/Tilable_surfaces/internal/parallel_for.h>
-#include <CGAL/Tilable_surfaces/internal/Optimization/energy_terms.h>
+#include <CGAL/Tilable_surfaces/internal/Optimization/congruence_quantities.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/quantity_hessian.h>
 
 #include <Eigen/Core>
@@ -39,7 +39,7 @@ namespace internal {
 // The SQP phase needs the constraints' exact Hessian, available for
 // scale_free_volume() only; the projection phase needs constraints whose
 // residual bounds the congruence error, which volume_shape() gives on slivers
-// too (energy_terms.h).
+// too (congruence_quantities.h).
 enum Volume_quantity { SCALE_FREE_VOLUME, VOLUME_SHAPE };
 
 class Congruence_constraints
@@ -131,7 +131,6 @@ public:
   Eigen::SparseMatrix<double> lagrangian_hessian(const Point_matrix& X, const std::vector<int>& variable,
                                                  int number_of_unknowns, const Eigen::VectorXd& lambda) const
   {
-    typedef Eigen::Matrix<double, 12, 1> Vector12;
     const std::size_t m = m_rows.size();
     std::vector<Eigen::Triplet<double>> slots(m * max_hessian_entries);
     std::vector<int> counts(m, 0);
@@ -161,26 +160,9 @@ public:
           emit(*row.b, -6 * m_ell * scale_free_volume_hessian(*row.b, X));
         return;
       }
-      // The 4 vertices (a0, a1, b0, b1): c = f(q_a, q_b), q = |x0 - x1|^2.
+      // The 4 vertices (a0, a1, b0, b1).
       const std::array<int, 4> vi{{(*row.a)[0], (*row.a)[1], (*row.b)[0], (*row.b)[1]}};
-      const Quantity qa = internal::evaluate(SQUARED_DISTANCE, *row.a, X),
-                     qb = internal::evaluate(SQUARED_DISTANCE, *row.b, X);
-      const Row_function f = row_function(row.kind, qa.value, qb.value);
-      Vector12 ga = Vector12::Zero(), gb = Vector12::Zero();
-      ga << qa.gradient[0], qa.gradient[1], Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero();
-      gb << Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), qb.gradient[0], qb.gradient[1];
-      Item_hessian B = f.daa * ga * ga.transpose() + f.dbb * gb * gb.transpose() +
-                       f.dab * (ga * gb.transpose() + gb * ga.transpose());
-      const Eigen::Matrix3d I2 = 2 * Eigen::Matrix3d::Identity(); // d^2 |x0 - x1|^2
-      for(int k = 0; k < 2; ++k)
-      {
-        const double dq = k == 0 ? f.da : f.db;
-        B.block<3, 3>(6 * k, 6 * k) += dq * I2;
-        B.block<3, 3>(6 * k + 3, 6 * k + 3) += dq * I2;
-        B.block<3, 3>(6 * k, 6 * k + 3) -= dq * I2;
-        B.block<3, 3>(6 * k + 3, 6 * k) -= dq * I2;
-      }
-      emit(vi, B);
+      emit(vi, distance_row_hessian(row, X));
     });
     std::vector<Eigen::Triplet<double>> triplets;
     for(std::size_t r = 0; r < m; ++r)
@@ -192,6 +174,31 @@ public:
   }
 
 private:
+  // d^2 c / dX^2 of a row of squared lengths over the 4 vertices
+  // (a0, a1, b0, b1): c = f(q_a, q_b), q = |x0 - x1|^2.
+  Item_hessian distance_row_hessian(const Row& row, const Point_matrix& X) const
+  {
+    typedef Eigen::Matrix<double, 12, 1> Vector12;
+    const Quantity qa = internal::evaluate(SQUARED_DISTANCE, *row.a, X),
+                   qb = internal::evaluate(SQUARED_DISTANCE, *row.b, X);
+    const Row_function f = row_function(row.kind, qa.value, qb.value);
+    Vector12 ga = Vector12::Zero(), gb = Vector12::Zero();
+    ga << qa.gradient[0], qa.gradient[1], Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero();
+    gb << Eigen::Vector3d::Zero(), Eigen::Vector3d::Zero(), qb.gradient[0], qb.gradient[1];
+    Item_hessian B = f.daa * ga * ga.transpose() + f.dbb * gb * gb.transpose() +
+                     f.dab * (ga * gb.transpose() + gb * ga.transpose());
+    const Eigen::Matrix3d I2 = 2 * Eigen::Matrix3d::Identity(); // d^2 |x0 - x1|^2
+    for(int k = 0; k < 2; ++k)
+    {
+      const double dq = k == 0 ? f.da : f.db;
+      B.block<3, 3>(6 * k, 6 * k) += dq * I2;
+      B.block<3, 3>(6 * k + 3, 6 * k + 3) += dq * I2;
+      B.block<3, 3>(6 * k, 6 * k + 3) -= dq * I2;
+      B.block<3, 3>(6 * k + 3, 6 * k) -= dq * I2;
+    }
+    return B;
+  }
+
   // c = f(q_a, q_b) and its first and second derivatives.
   struct Row_function
   {

@@ -5,7 +5,8 @@
 #define CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_CONSTRAINED_GAUSS_NEWTON_H
 
 // The default solver: the surface closest to the input subject to the
-// congruence constraints c(X) = 0 of energy_terms.h, held as hard constraints.
+// congruence constraints c(X) = 0 of congruence_quantities.h, held as hard
+// constraints.
 //
 //   min_d  1/2 d^T H d,  H = mu1 I + mu2 D^T D (per coordinate),  X = X0 + d,
 //   s.t.   c(X0 + d) = 0.
@@ -56,6 +57,7 @@
 #include <CGAL/Tilable_surfaces/internal/Optimization/closeness_objective.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/congruence_constraints.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/sparse_solver.h>
+#include <CGAL/Tilable_surfaces/internal/tuning.h>
 
 #include <algorithm>
 #include <cmath>
@@ -65,9 +67,6 @@
 namespace CGAL {
 namespace Tilable_surfaces {
 namespace internal {
-
-// b relative to H's unit diagonal; constraint rows are O(1) per unit move.
-constexpr double kkt_regularization() { return 1e6; }
 
 // The step of the quadratic model with gradient `gradient` subject to
 // J step = -`target`, by the method of multipliers on the regularized KKT
@@ -81,7 +80,7 @@ inline Eigen::VectorXd multiplier_step(const SPD_solver& solver, const Eigen::Sp
                                        double eta)
 {
   Eigen::VectorXd step;
-  for(int pass = 0; pass < 20; ++pass)
+  for(int pass = 0; pass < tuning::multiplier_passes; ++pass)
   {
     step = solver.solve(-(gradient + J.transpose() * (multipliers + b * target)));
     const Eigen::VectorXd linear_residual = target + J * step;
@@ -104,35 +103,6 @@ inline Eigen::VectorXd multiplier_step(const SPD_solver& solver, const Eigen::Sp
 // metric alone).
 enum Sqp_variant { GAUSS_NEWTON, ISOTROPIC_GAUSS_NEWTON, CAUTIOUS_GAUSS_NEWTON, EXACT_HESSIAN };
 
-// The tuning of one attempt, each constant named once.
-struct Sqp_tuning
-{
-  // The congruence error is measured for the visitor every so many iterations.
-  static constexpr int measure_period = 10;
-  // Trust region on the largest vertex move, in mean edge lengths: start, floor.
-  static constexpr double initial_radius = 0.5, min_radius = 1e-3;
-  // Inertia control: the first shift of an indefinite KKT matrix, its growth
-  // until positive definite, the shift that gives up, and its decay and
-  // floor from one iteration to the next.
-  static constexpr double first_shift = 1e-4, shift_growth = 10, max_shift = 1e8;
-  static constexpr double shift_decay = 3, min_shift = 1e-8;
-  // Progress: an error below this fraction of the best so far; how many
-  // iterations without it end a phase.
-  static constexpr double progress = 0.9;
-  static constexpr int gauss_newton_patience = 5, exact_hessian_patience = 10, projection_patience = 10;
-  // Relative accuracy of the multiplier passes (at most, with the exact Hessian).
-  static constexpr double multiplier_accuracy = 1e-3;
-  // Armijo's sufficient decrease, and the shortest step fraction tried.
-  static constexpr double armijo = 1e-4, min_step_fraction = 1e-6;
-  // Levenberg-Marquardt: mu = theta |c|_inf / ell, floored so that round-off
-  // is not amplified; theta grows or shrinks by this factor within its
-  // bounds, on the gain ratio rho of actual to predicted decrease.
-  static constexpr double min_damping = 1e-8, damping_factor = 4, max_theta = 1e12;
-  static constexpr double min_gain_ratio = 1e-4, poor_gain_ratio = 0.25, good_gain_ratio = 0.75;
-  // Once congruent, the projection stops at this fraction of the tolerance.
-  static constexpr double round_off_residual = 1e-3;
-};
-
 // One solve from the input, numbering its iterations from `first_iteration`
 // + 1; `stopped` tells whether the visitor stopped it. The first attempt of a
 // solve (`shows_start`) also shows the visitor its starting point. Phase 1 uses the
@@ -141,7 +111,6 @@ template <typename Visitor>
 class Sqp_attempt
 {
   typedef Eigen::SparseMatrix<double> Matrix;
-  typedef Sqp_tuning T;
 
 public:
   Sqp_attempt(const Solver_input& in, const Solver_settings& settings, Sqp_variant variant, bool shows_start,
@@ -209,7 +178,7 @@ private:
     m_report.iterations = m_it;
     m_report.objective = m_settings.weights.distance * m_objective.value(m_X);
     const double residual = m_c.cwiseAbs().maxCoeff() / m_ell;
-    m_measured = residual <= m_tolerance || m_it % T::measure_period == 0;
+    m_measured = residual <= m_tolerance || m_it % tuning::sqp_measure_period == 0;
     m_report.congruence_error = m_measured ? congruence_error(m_in.problem, m_X) : residual;
     m_stopped = !m_visitor.iteration(m_it, m_report.congruence_error, m_report.objective);
     return !m_stopped;
@@ -220,7 +189,7 @@ private:
   Eigen::VectorXd kkt_step(const Eigen::VectorXd& gradient, const Eigen::VectorXd& target,
                            Eigen::VectorXd& multipliers, double eta) const
   {
-    return multiplier_step(m_solver, m_J, kkt_regularization(), gradient, target, multipliers, eta);
+    return multiplier_step(m_solver, m_J, tuning::kkt_regularization, gradient, target, multipliers, eta);
   }
 
   // Factorizes K + shift I, raising the shift until it is positive definite;
@@ -232,10 +201,10 @@ private:
       m_identity.resize(m_n, m_n);
       m_identity.setIdentity();
     }
-    shift = shift == 0 ? 0 : (std::max)(shift / T::shift_decay, T::min_shift);
-    while(!m_solver.factorize(Matrix(K + shift * m_identity)) && shift < T::max_shift)
-      shift = shift == 0 ? T::first_shift : T::shift_growth * shift;
-    return m_solver.positive_definite() && shift < T::max_shift;
+    shift = shift == 0 ? 0 : (std::max)(shift / tuning::sqp_shift_decay, tuning::sqp_min_shift);
+    while(!m_solver.factorize(Matrix(K + shift * m_identity)) && shift < tuning::sqp_max_shift)
+      shift = shift == 0 ? tuning::sqp_first_shift : tuning::sqp_shift_growth * shift;
+    return m_solver.positive_definite() && shift < tuning::sqp_max_shift;
   }
 
   // Phase 1: SQP steps, with the exact Lagrangian Hessian
@@ -245,8 +214,8 @@ private:
   bool sqp_phase()
   {
     const Matrix& H = m_objective.hessian();
-    const double b = kkt_regularization();
-    double nu = 0, radius = T::initial_radius, shift = 0,
+    const double b = tuning::kkt_regularization;
+    double nu = 0, radius = tuning::sqp_initial_radius, shift = 0,
            best_error = std::numeric_limits<double>::infinity();
     int iterations_since_best = 0;
     Eigen::VectorXd lambda = Eigen::VectorXd::Zero(m_c.size());
@@ -265,13 +234,13 @@ private:
       const double error = m_exact_hessian
                          ? (std::max)(residual, (Hd + m_J.transpose() * lambda).cwiseAbs().maxCoeff())
                          : residual;
-      if(error < T::progress * best_error)
+      if(error < tuning::solver_progress * best_error)
       {
         best_error = error;
         iterations_since_best = 0;
       }
       else if(++iterations_since_best >=
-              (m_exact_hessian ? T::exact_hessian_patience : T::gauss_newton_patience))
+              (m_exact_hessian ? tuning::exact_hessian_patience : tuning::gauss_newton_patience))
         break;
       // With the exact Hessian, inexact multiplier passes warm-started from the
       // previous multipliers, with a relative accuracy that tightens as |c|
@@ -279,18 +248,14 @@ private:
       // linearly anyway; there, passes from zero at a fixed accuracy measured
       // as good or better (decocube K = 15: 10 iterations instead of 44).
       const double eta =
-        m_exact_hessian ? (std::min)(T::multiplier_accuracy, residual) : T::multiplier_accuracy;
+        m_exact_hessian ? (std::min)(tuning::multiplier_accuracy, residual) : tuning::multiplier_accuracy;
       Eigen::VectorXd lambda_trial = m_exact_hessian ? lambda : Eigen::VectorXd::Zero(m_c.size());
       m_delta = kkt_step(Hd, m_c, lambda_trial, eta);
-      nu = (std::max)(nu, 2 * lambda_trial.norm());
+      nu = (std::max)(nu, tuning::sqp_merit_margin * lambda_trial.norm());
       const Step step = line_search(Hd, nu, radius, eta);
       if(!step.accepted) // the merit refuses the step: leave it to the projection
         break;
-      if(step.alpha == step.alpha_max)
-        radius *= 2;
-      else if(m_variant == CAUTIOUS_GAUSS_NEWTON || m_variant == EXACT_HESSIAN ||
-              step.alpha < 0.5 * step.alpha_max)
-        radius = (std::max)(0.5 * radius, T::min_radius);
+      update_radius(step, radius);
       // Multipliers of the full step; those of a shortened step are blended.
       lambda += (std::min)(step.alpha, 1.0) * (lambda_trial - lambda);
       const double step_length = largest_move(step.d - m_d);
@@ -312,6 +277,18 @@ private:
     bool accepted;
   };
 
+  // The trust region after an accepted step: it grows after a full step and
+  // shrinks after a shortened one, which Gauss-Newton tolerates down to half
+  // (Sqp_variant).
+  void update_radius(const Step& step, double& radius) const
+  {
+    if(step.alpha == step.alpha_max)
+      radius *= tuning::sqp_radius_growth;
+    else if(m_variant == CAUTIOUS_GAUSS_NEWTON || m_variant == EXACT_HESSIAN ||
+            step.alpha < tuning::sqp_backtracking * step.alpha_max)
+      radius = (std::max)(tuning::sqp_radius_shrink * radius, tuning::sqp_min_radius);
+  }
+
   // Backtracking along m_delta on the l2 merit f + nu |c| (nu above
   // |lambda|), within the trust region on the largest vertex move, in edge
   // lengths: far from a solution the linearization is poor and a full step
@@ -323,7 +300,8 @@ private:
     auto acceptable = [&](const Eigen::VectorXd& dd, double alpha) {
       const Point_matrix Y = positions(dd);
       m_constraints.evaluate(Y, m_variable, m_n, m_c_trial, nullptr);
-      return m_objective.value(Y) + nu * m_c_trial.norm() <= merit_now + T::armijo * alpha * slope;
+      return m_objective.value(Y) + nu * m_c_trial.norm() <=
+             merit_now + tuning::sqp_armijo * alpha * slope;
     };
     Step step;
     step.alpha_max = (std::min)(1.0, radius * m_ell / largest_move(m_delta));
@@ -335,14 +313,15 @@ private:
       // Second-order correction against the Maratos effect: the full step
       // plus the least-W-norm move back onto the constraints' linearization
       // at its end point. Only with the exact Hessian: with Gauss-Newton it
-      // measured no gain.
+      // gains nothing measurable.
       Eigen::VectorXd correction_multipliers = Eigen::VectorXd::Zero(m_c.size());
       const Eigen::VectorXd correction =
         kkt_step(Eigen::VectorXd::Zero(m_n), m_c_trial, correction_multipliers, eta);
       step.d = m_d + m_delta + correction;
       step.accepted = acceptable(step.d, step.alpha);
     }
-    for(step.alpha *= 0.5; !step.accepted && step.alpha >= T::min_step_fraction; step.alpha *= 0.5)
+    for(step.alpha *= tuning::sqp_backtracking; !step.accepted && step.alpha >= tuning::sqp_min_step_fraction;
+        step.alpha *= tuning::sqp_backtracking)
     {
       step.d = m_d + step.alpha * m_delta;
       step.accepted = acceptable(step.d, step.alpha);
@@ -357,15 +336,15 @@ private:
   {
     const Congruence_constraints projection(m_in.problem, m_ell, VOLUME_SHAPE);
     projection.evaluate(m_X, m_variable, m_n, m_c, nullptr);
-    double theta = 1, best_residual = m_c.cwiseAbs().maxCoeff();
+    double theta = tuning::lm_initial_theta, best_residual = m_c.cwiseAbs().maxCoeff();
     int iterations_since_best = 0;
-    while(m_it < m_settings.max_iterations && theta < T::max_theta)
+    while(m_it < m_settings.max_iterations && theta < tuning::lm_max_theta)
     {
       projection.evaluate(m_X, m_variable, m_n, m_c, &m_J);
-      const double mu = (std::max)(theta * m_c.cwiseAbs().maxCoeff() / m_ell, T::min_damping);
+      const double mu = (std::max)(theta * m_c.cwiseAbs().maxCoeff() / m_ell, tuning::lm_min_damping);
       if(!m_solver.factorize(Matrix(Matrix(m_J.transpose() * m_J) + mu * m_objective.isotropic_hessian())))
       { // mu too small for round-off: damp more
-        theta *= T::damping_factor;
+        theta *= tuning::lm_damping_factor;
         continue;
       }
       m_delta = m_solver.solve(-(m_J.transpose() * m_c));
@@ -374,13 +353,14 @@ private:
       projection.evaluate(X_trial, m_variable, m_n, m_c_trial, nullptr);
       const double predicted = m_c.squaredNorm() - (m_c + m_J * m_delta).squaredNorm();
       const double rho = (m_c.squaredNorm() - m_c_trial.squaredNorm()) / predicted;
-      if(!(predicted > 0 && rho > T::min_gain_ratio))
+      if(!(predicted > 0 && rho > tuning::lm_min_gain_ratio))
       {
-        theta *= T::damping_factor;
+        theta *= tuning::lm_damping_factor;
         continue;
       }
-      theta = rho > T::good_gain_ratio ? (std::max)(theta / T::damping_factor, T::min_damping)
-                                       : (rho < T::poor_gain_ratio ? T::damping_factor * theta : theta);
+      theta = rho > tuning::lm_good_gain_ratio
+                ? (std::max)(theta / tuning::lm_damping_factor, tuning::lm_min_damping)
+                : (rho < tuning::lm_poor_gain_ratio ? tuning::lm_damping_factor * theta : theta);
       m_d = d_trial;
       m_X = X_trial;
       m_c = m_c_trial;
@@ -388,15 +368,15 @@ private:
         return true;
       const double residual = m_c.cwiseAbs().maxCoeff();
       // Once congruent, a few more cheap quadratic steps reach round-off.
-      if(congruent() && (residual <= T::round_off_residual * m_tolerance * m_ell ||
+      if(congruent() && (residual <= tuning::lm_round_off_residual * m_tolerance * m_ell ||
                          largest_move(m_delta) <= m_settings.convergence_tolerance * m_ell))
         break;
-      if(residual < T::progress * best_residual)
+      if(residual < tuning::solver_progress * best_residual)
       {
         best_residual = residual;
         iterations_since_best = 0;
       }
-      else if(++iterations_since_best >= T::projection_patience)
+      else if(++iterations_since_best >= tuning::projection_patience)
         break;
     }
     return false;

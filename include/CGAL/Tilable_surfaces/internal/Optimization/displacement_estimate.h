@@ -49,13 +49,13 @@ inline Displacement_estimate linearized_displacement(const Solver_input& in, con
   Eigen::VectorXd c;
   Matrix J;
   constraints.evaluate(in.X0, variable, n, c, &J);
-  const double b = kkt_regularization();
+  const double b = tuning::kkt_regularization;
   SPD_solver solver;
   if(!solver.factorize(Matrix(objective.hessian() + b * Matrix(J.transpose() * J))))
     return estimate;
   Eigen::VectorXd multipliers = Eigen::VectorXd::Zero(c.size());
   const Eigen::VectorXd delta =
-    multiplier_step(solver, J, b, Eigen::VectorXd::Zero(n), c, multipliers, 1e-3);
+    multiplier_step(solver, J, b, Eigen::VectorXd::Zero(n), c, multipliers, tuning::multiplier_accuracy);
   double sum = 0;
   for(int v = 0; v < int(variable.size()); ++v)
   {

@@ -4,11 +4,11 @@
 #ifndef CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_QUANTITY_HESSIAN_H
 #define CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_QUANTITY_HESSIAN_H
 
-// Second derivatives of the quantities of energy_terms.h, as 12 x 12 matrices
-// over the item's 4 vertices (3 x 3 block (i, j) = d^2 q / dx_i dx_j), for
-// the exact Lagrangian Hessian of the default solver.
+// Second derivatives of the quantities of congruence_quantities.h, as 12 x 12
+// matrices over the item's 4 vertices (3 x 3 block (i, j) =
+// d^2 q / dx_i dx_j), for the exact Lagrangian Hessian of the default solver.
 
-#include <CGAL/Tilable_surfaces/internal/Optimization/energy_terms.h>
+#include <CGAL/Tilable_surfaces/internal/Optimization/congruence_quantities.h>
 
 #include <Eigen/Core>
 

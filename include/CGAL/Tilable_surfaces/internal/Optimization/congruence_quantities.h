@@ -1,8 +1,8 @@
 // Copyright (c) 2026 Tilable_surfaces contributors.
 // SPDX-License-Identifier: GPL-3.0-or-later
 
-#ifndef CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_ENERGY_TERMS_H
-#define CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_ENERGY_TERMS_H
+#ifndef CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_CONGRUENCE_QUANTITIES_H
+#define CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_CONGRUENCE_QUANTITIES_H
 
 // The five terms of the paper's energy (§4) and the quantities they compare
 // (congruence_constraints.h turns them into the default solver's constraints).
@@ -17,6 +17,7 @@
 
 #include <CGAL/Tilable_surfaces/Energy_terms.h>
 #include <CGAL/Tilable_surfaces/internal/Tilable_problem.h>
+#include <CGAL/Tilable_surfaces/internal/tuning.h>
 
 #include <Eigen/Core>
 #include <Eigen/Sparse>
@@ -157,13 +158,13 @@ inline Quantity scale_free_volume(const std::array<int, 4>& item, const Point_ma
 // diagonals, over sqrt(S). It does not change with scale, and a unit move of
 // a corner out of that plane changes it by about 1 / sqrt(S) whatever the
 // quad's proportions. V / S^(3/2) does not have this: on a sliver (seashell
-// K = 44: two edges of 0.17, two of 4e-4) it moved by width / sqrt(S) times
-// less, so a residual of 1e-6 let the instances keep mirrored heights
+// K = 44: two edges of 0.17, two of 4e-4) it moves by width / sqrt(S) times
+// less, so a residual of 1e-6 lets the instances keep mirrored heights
 // (congruence error 3e-4). With the edges and diagonals of instances equal,
 // so are S and |N|, and equal w means equal volume.
 inline Quantity volume_shape(const std::array<int, 4>& item, const Point_matrix& X)
 {
-  const double epsilon = 1e-4; // keeps P > 0 on a collapsed quad
+  const double epsilon = tuning::volume_shape_epsilon;
   Quantity q = evaluate(SIGNED_VOLUME, item, X);
   const Mean_squared_pair_distance S(item, X);
   const Eigen::Vector3d a = (X.row(item[2]) - X.row(item[0])).transpose(),
@@ -186,4 +187,4 @@ inline Quantity volume_shape(const std::array<int, 4>& item, const Point_matrix&
 } // namespace Tilable_surfaces
 } // namespace CGAL
 
-#endif // CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_ENERGY_TERMS_H
+#endif // CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_CONGRUENCE_QUANTITIES_H

@@ -16,23 +16,14 @@
 #include <CGAL/Tilable_surfaces/measure.h>
 #include <CGAL/Tilable_surfaces/named_parameters.h>
 #include <CGAL/Tilable_surfaces/optimize_tilable_surface.h>
-#include <CGAL/Tilable_surfaces/validation.h>
 #include <CGAL/Tilable_surfaces/visitor.h>
-#include <CGAL/Tilable_surfaces/internal/Face_clustering.h>
-#include <CGAL/Tilable_surfaces/internal/Search/candidate_solver.h>
 #include <CGAL/Tilable_surfaces/internal/Search/fidelity_search.h>
 #include <CGAL/Tilable_surfaces/internal/Search/refinement.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/sweep_start.h>
-#include <CGAL/Tilable_surfaces/internal/canonical_face_order.h>
 #include <CGAL/Tilable_surfaces/internal/tilable_surface_parameters.h>
+#include <CGAL/Tilable_surfaces/internal/tilable_surface_state.h>
 
-#include <CGAL/boost/graph/named_params_helper.h>
-
-#include <boost/property_map/property_map.hpp>
-
-#include <algorithm>
 #include <memory>
-#include <optional>
 #include <string>
 #include <utility>
 #include <vector>
@@ -79,11 +70,10 @@ template <typename ConcurrencyTag, typename PolygonMesh,
           typename VertexPointMap = typename CGAL::GetVertexPointMap<PolygonMesh>::type>
 class K_set_tilable_surface
 {
-  typedef typename CGAL::GetInitializedFaceIndexMap<PolygonMesh>::const_type Original_face_index_map;
-  // The steps index the faces in the canonical order (cluster_quads(), "Canonical face order").
-  typedef internal::Canonical_face_index_map<Original_face_index_map> Face_index_map;
-  typedef typename CGAL::GetInitializedVertexIndexMap<PolygonMesh>::const_type Vertex_index_map;
-  typedef typename boost::property_traits<VertexPointMap>::value_type Point;
+  typedef internal::Tilable_surface_state<PolygonMesh, VertexPointMap> State;  // the input and the clustering
+  typedef typename State::Face_index_map Face_index_map;
+  typedef typename State::Vertex_index_map Vertex_index_map;
+  typedef typename State::Point Point;
 
 public:
   /// \name Types
@@ -110,25 +100,8 @@ public:
   /// the input.
   /// \throws Invalid_input if `pm` is not a valid quad mesh.
   K_set_tilable_surface(PolygonMesh& pm, VertexPointMap vpm)
-    : m_mesh(pm)
-    , m_vpm(vpm)
-    , m_vim(CGAL::get_initialized_vertex_index_map(pm))
-    , m_cluster(num_faces(pm), 0)
-    , m_orientation(num_faces(pm), 0)
-  {
-    m_clustering_model.label.assign(num_faces(pm), 0);
-    m_clustering_model.orientation.assign(num_faces(pm), Quad_orientation());
-    const auto original_index = CGAL::get_initialized_face_index_map(pm);
-    const auto np = parameters::vertex_point_map(m_vpm).face_index_map(original_index);
-    validate_quad_mesh(pm, np);
-    m_input_points.resize(num_vertices(pm));
-    for(auto v : vertices(pm))
-      m_input_points[get(m_vim, v)] = get(m_vpm, v);
-    m_faces = internal::Canonical_faces<Original_face_index_map>(pm, original_index,
-                                                                 internal::face_quads(pm, original_index, np));
-    m_fim = m_faces.index_map();
-    m_mean_edge_length = mean_edge_length(pm, np);
-  }
+    : m_state(pm, vpm)
+  {}
 
   /// The same, with the mesh's internal vertex point map.
   explicit K_set_tilable_surface(PolygonMesh& pm)
@@ -137,7 +110,7 @@ public:
   /// @}
 
   /// \name Clustering
-  /// The four stages of `cluster()` may be run one by one.
+  /// The four stages of `cluster()` may also be run one by one.
   /// @{
 
   /// Clusters the faces into `number_of_tiles` S-quads as `cluster_quads()`
@@ -150,8 +123,9 @@ public:
   {
     start_clustering(np);
     auto&& visitor = internal::visitor_of(np);
-    adopt_selected_candidate(with_concurrency([&] { return m_clusterer->run(m_clustering, visitor); }));
-    return m_clustering;
+    m_state.adopt_selected_candidate(
+      with_concurrency([&] { return m_state.clusterer->run(m_state.clustering, visitor); }));
+    return m_state.clustering;
   }
 
   /// Stage 1 of `cluster()`: reads its parameters and chooses the path
@@ -165,8 +139,8 @@ public:
   std::size_t initialize_clusters(const CGAL_NP_CLASS& np)
   {
     start_clustering(np);
-    with_concurrency([&] { m_clusterer->initialize(m_clustering); });
-    return m_clustering.number_of_initial_clusters;
+    with_concurrency([&] { m_state.clusterer->initialize(m_state.clustering); });
+    return m_state.clustering.number_of_initial_clusters;
   }
 
   /// Stage 2: merges the initial clusters down to K by a beam search on the
@@ -174,8 +148,8 @@ public:
   /// (`Clustering_result::candidates`). Returns the size of the pool.
   std::size_t merge_to_tile_count()
   {
-    with_concurrency([&] { clusterer().merge_to_tile_count(m_clustering); });
-    return m_clustering.candidates.size();
+    with_concurrency([&] { m_state.clusterer_under_way().merge_to_tile_count(m_state.clustering); });
+    return m_state.clustering.candidates.size();
   }
 
   /// Stage 3: adds the k-means, quad-strip and grid-segment candidates that
@@ -188,8 +162,8 @@ public:
   /// the size of the pool.
   std::size_t add_other_candidates()
   {
-    with_concurrency([&] { clusterer().add_other_candidates(m_clustering); });
-    return m_clustering.candidates.size();
+    with_concurrency([&] { m_state.clusterer_under_way().add_other_candidates(m_state.clustering); });
+    return m_state.clustering.candidates.size();
   }
 
   /// Stage 4: makes the candidate of lowest score the current clustering,
@@ -197,8 +171,9 @@ public:
   /// chosen for flexibility (`Clustering_result::chosen_candidate`).
   const Clustering_result& select_candidate()
   {
-    adopt_selected_candidate(with_concurrency([&] { return clusterer().select(m_clustering); }));
-    return m_clustering;
+    m_state.adopt_selected_candidate(
+      with_concurrency([&] { return m_state.clusterer_under_way().select(m_state.clustering); }));
+    return m_state.clustering;
   }
   /// @}
 
@@ -207,13 +182,13 @@ public:
 
   /// The orientation policy under which the instances of the current
   /// clustering match their S-quads (`cluster()`'s or `set_clustering()`'s).
-  Orientation_policy orientation_policy() const { return m_policy; }
+  Orientation_policy orientation_policy() const { return m_state.policy; }
 
   /// Whether a clustering exists (`cluster()` or `set_clustering()`).
-  bool is_clustered() const { return m_is_clustered; }
+  bool is_clustered() const { return m_state.is_clustered; }
 
   /// The number of clusters K.
-  std::size_t number_of_clusters() const { return m_clustering_model.number_of_clusters; }
+  std::size_t number_of_clusters() const { return m_state.model.number_of_clusters; }
 
   /// The current clustering: after `cluster()`, its result; after an edit,
   /// `use_candidate()`, `set_clustering()` or the fidelity search of
@@ -223,26 +198,24 @@ public:
   /// `cluster()` (none after `set_clustering()` or `refine_to()`).
   const Clustering_result& clustering() const
   {
-    if(m_summary_is_stale)
-      describe_current_clustering();
-    return m_clustering;
+    if(m_state.summary_is_stale)
+      m_state.describe();
+    return m_state.clustering;
   }
 
   /// The cluster of every face.
-  Face_cluster_map face_cluster_map() { return Face_cluster_map(m_cluster.begin(), m_fim); }
+  Face_cluster_map face_cluster_map() { return m_state.cluster_map(); }
 
   /// The S-quad orientation of every face.
-  Face_orientation_map face_orientation_map() { return Face_orientation_map(m_orientation.begin(), m_fim); }
+  Face_orientation_map face_orientation_map() { return m_state.orientation_map(); }
 
   /// The edge-sharing graph of the current clustering, with the input's edge
   /// lengths. The object keeps it: a merge amends it, other edits rebuild it
   /// when it is next asked for.
   const Edge_sharing_graph<PolygonMesh>& edge_sharing_graph() const
   {
-    require_clustering();
-    if(!m_graph)
-      m_graph.emplace(internal::Validated_mesh(true), m_mesh, m_fim, input_point_map(), m_clustering_model);
-    return *m_graph;
+    m_state.require_clustering();
+    return m_state.edge_sharing_graph();
   }
 
   /// The degree of flexibility of the current clustering.
@@ -250,7 +223,7 @@ public:
   /// @}
 
   /// \name Editing
-  /// Each edit is judged on the input quads and reports the new degree of flexibility.
+  /// Each edit is judged on the input quads.
   /// @{
 
   /// Uses the clustering of the maps `face_cluster_map` (ids 0..K-1, all
@@ -263,17 +236,12 @@ public:
   void set_clustering(FaceClusterMap face_cluster_map, FaceOrientationMap face_orientation_map,
                       Orientation_policy policy = PROPER_RIGID_MOTIONS)
   {
-    internal::Face_clustering clustering =
-      internal::in_canonical_order(internal::read_face_clustering(m_mesh, m_faces.original_index,
-                                                                  face_cluster_map, face_orientation_map,
-                                                                  internal::unknown_number_of_clusters,
-                                                                  internal::CONTIGUOUS_IDS),
-                                   m_faces.rank);
-    m_clustering = Clustering_result();
-    m_clustering.weights_are_exact = false;
-    m_policy = policy;
-    m_is_clustered = true;
-    set_clustering_model(std::move(clustering));
+    internal::Face_clustering clustering = internal::in_canonical_order(
+      internal::read_face_clustering(m_state.mesh, m_state.input_faces.original_index, face_cluster_map,
+                                     face_orientation_map, internal::unknown_number_of_clusters,
+                                     internal::CONTIGUOUS_IDS),
+      m_state.input_faces.rank);
+    m_state.set_clustering(std::move(clustering), policy);
   }
 
   /// Makes candidate `i` of the pool of the last `cluster()`
@@ -282,11 +250,11 @@ public:
   /// returns, from the input quads. Returns its degree of flexibility.
   std::size_t use_candidate(std::size_t i)
   {
-    if(i >= m_clustering.candidates.size())
+    if(i >= m_state.clustering.candidates.size())
       throw Invalid_input("no clustering candidate " + std::to_string(i), Invalid_input::PARAMETER);
     std::size_t degree_of_flexibility = 0;
-    set_clustering_model(
-      with_concurrency([&] { return candidate_solver().candidate_model(i, degree_of_flexibility); }));
+    m_state.set_model(
+      with_concurrency([&] { return m_state.candidate_solver().candidate_model(i, degree_of_flexibility); }));
     return degree_of_flexibility;
   }
 
@@ -297,16 +265,10 @@ public:
   /// changes then.
   std::size_t merge_clusters(std::size_t a, std::size_t b)
   {
-    require_clustering();
+    m_state.require_clustering();
     edge_sharing_graph(); // built if it was not: it is amended below
-    with_concurrency([&] {
-      const Quad_orientation correspondence =
-        internal::merge_clusters(m_clustering_model, m_faces.quads, a, b, m_policy);
-      m_graph->merge_clusters((std::min)(a, b), (std::max)(a, b), correspondence);
-      m_graph->compact_cluster_ids();
-    });
-    publish_clustering_model();
-    return m_graph->degree_of_flexibility();
+    with_concurrency([&] { m_state.merge_clusters(a, b); });
+    return m_state.graph->degree_of_flexibility();
   }
 
   /// Splits cluster `c` in two as `Tilable_surfaces::split_cluster()` does,
@@ -315,13 +277,8 @@ public:
   /// nothing changes then.
   std::size_t split_cluster(std::size_t c, unsigned int random_seed = defaults::random_seed)
   {
-    require_clustering();
-    with_concurrency([&] {
-      CGAL::Random random(random_seed);
-      internal::split_cluster(m_clustering_model, m_faces.quads, c, m_policy, random);
-    });
-    m_graph.reset(); // a union-find cannot undo a union
-    publish_clustering_model();
+    m_state.require_clustering();
+    with_concurrency([&] { m_state.split_cluster(c, random_seed); });
     return degree_of_flexibility();
   }
 
@@ -331,13 +288,8 @@ public:
   /// the new degree of flexibility.
   std::size_t retag_orientations()
   {
-    require_clustering();
-    with_concurrency([&] {
-      internal::retag_orientations(m_clustering_model, m_mesh, m_fim, m_faces.quads, m_policy,
-                                   m_similarity_threshold * m_mean_edge_length);
-    });
-    m_graph.reset();
-    publish_clustering_model();
+    m_state.require_clustering();
+    with_concurrency([&] { m_state.retag_orientations(); });
     return degree_of_flexibility();
   }
   /// @}
@@ -351,10 +303,10 @@ public:
   template <typename CGAL_NP_TEMPLATE_PARAMETERS>
   Displacement_prediction predict_displacement(const CGAL_NP_CLASS& np = parameters::default_values())
   {
-    require_clustering();
+    m_state.require_clustering();
     restore_input();
     return with_concurrency([&] {
-      return internal::predict_displacement(internal::Validated_mesh(true), m_mesh, with_own_maps(np));
+      return internal::predict_displacement(internal::Validated_mesh(true), m_state.mesh, with_own_maps(np));
     });
   }
 
@@ -367,38 +319,30 @@ public:
   template <typename CGAL_NP_TEMPLATE_PARAMETERS>
   const Optimization_result& optimize(const CGAL_NP_CLASS& np = parameters::default_values())
   {
-    require_clustering();
+    m_state.require_clustering();
     restore_input();
-    m_optimization = with_concurrency([&] {
-      return internal::optimize_tilable_surface(internal::Validated_mesh(true), m_mesh, with_own_maps(np));
+    m_state.optimization = with_concurrency([&] {
+      return internal::optimize_tilable_surface(internal::Validated_mesh(true), m_state.mesh, with_own_maps(np));
     });
-    return m_optimization;
+    return m_state.optimization;
   }
 
   /// The result of the last `optimize()` call.
-  const Optimization_result& optimization() const { return m_optimization; }
+  const Optimization_result& optimization() const { return m_state.optimization; }
 
   /// Looks for the tilable result closest to the input among several
   /// clusterings, then improves it; the default of `make_k_set_tilable()`
-  /// (user manual, section "Fidelity"; the policy is described in
-  /// internal/Search/fidelity_search.h). The sweep clusterings of the pool
+  /// (user manual, section "Fidelity"). The sweep clusterings of the pool
   /// (`Clustering_candidate::GRID_SWEEPS`) are solved first, from the swept
-  /// surface at which they are exact (user manual, section TS_Sweeps). The
-  /// other candidates of the last `cluster()` are ranked by their predicted
-  /// displacement (`predict_displacement()`; up to `large_mesh_faces`) and
-  /// by the spread of the input's edge lengths that they tie together
-  /// (`Clustering_candidate::length_deviation`); taking the two rankings in
-  /// turn, the `number_of_optimized_candidates` first (default
-  /// `default_number_of_optimized_candidates()`), then a quarter as many
-  /// more segment clusterings (`Clustering_candidate::GRID_SEGMENTS`), are
-  /// optimized fully from the input, each after the first with at most 3
-  /// times the iterations of the best so far (at least 30). Then
-  /// `number_of_improvement_rounds` rounds of edits, K fixed (split the
-  /// cluster that moved most, merge the pair of least length spread and
-  /// predicted displacement, re-tag, optimize), and up to 4 repair rounds
-  /// while the best result is not tilable. When `number_of_optimized_candidates`
-  /// is 0 (its default above `large_mesh_faces`) and a sweep is exact, the
-  /// search ends at the best sweep.
+  /// surface at which they are exact; the other candidates of the last
+  /// `cluster()` most likely to end closest (by `predict_displacement()`
+  /// and by `Clustering_candidate::length_deviation`), the
+  /// `number_of_optimized_candidates` first (default
+  /// `default_number_of_optimized_candidates()`), are optimized from the
+  /// input; then `number_of_improvement_rounds` rounds of split-and-merge
+  /// edits, K fixed, and repair rounds while the best is not tilable. When
+  /// `number_of_optimized_candidates` is 0 (its default above
+  /// `large_mesh_faces`) and a sweep is exact, the search ends there.
   ///
   /// A result replaces the best one only if it is better: tilable
   /// (`congruence_tolerance`) before not, then the smaller symmetric
@@ -406,19 +350,16 @@ public:
   /// error). So the rounds never return a worse result than the candidates.
   /// The mesh, the maps and `optimization()` hold the best result at the
   /// end. Takes the parameters of `optimize()`; the visitor's
-  /// `phase(name, seconds)` is called after each candidate and round; with a
-  /// parallel `ConcurrencyTag` its `iteration()` may be called by two solves
-  /// in turn (under a lock), one of which may be discarded; the results are
-  /// the same.
+  /// `phase(name, seconds)` is called after each candidate and round.
   /// Once the visitor stops a solve (`Optimization_result::stopped_by_visitor`),
   /// no further candidate or round is optimized.
   template <typename CGAL_NP_TEMPLATE_PARAMETERS>
   const Optimization_result& optimize_closest(const CGAL_NP_CLASS& user_np = parameters::default_values())
   {
-    require_clustering();
-    if(m_clustering.candidates.empty())
+    m_state.require_clustering();
+    if(m_state.clustering.candidates.empty())
       return optimize(user_np);
-    return internal::optimize_closest(*this, user_np);
+    return internal::optimize_closest<ConcurrencyTag>(*this, m_state, user_np);
   }
 
   /// Refines the current result to `k` clusters: splits the cluster with
@@ -442,19 +383,20 @@ public:
   template <typename CGAL_NP_TEMPLATE_PARAMETERS>
   const Optimization_result& refine_to(std::size_t k, const CGAL_NP_CLASS& np = parameters::default_values())
   {
-    require_clustering();
-    if(k < number_of_clusters() || k > num_faces(m_mesh))
+    m_state.require_clustering();
+    if(k < number_of_clusters() || k > num_faces(m_state.mesh))
       throw Invalid_input("cannot refine " + std::to_string(number_of_clusters()) + " clusters to K = " +
-                            std::to_string(k) + " (the mesh has " + std::to_string(num_faces(m_mesh)) + " faces)",
+                            std::to_string(k) + " (the mesh has " + std::to_string(num_faces(m_state.mesh)) +
+                            " faces)",
                           Invalid_input::PARAMETER);
     const std::size_t refined_k = number_of_clusters();
     bool retagged_wins = false;
-    set_solution(internal::refined_solution<ConcurrencyTag>(candidate_solver(), m_clustering_model, k, np,
-                                                            retagged_wins));
-    m_clustering = Clustering_result();
-    m_clustering.weights_are_exact = false;
-    m_clustering.choice_reason = internal::refinement_reason(refined_k, k, retagged_wins);
-    return m_optimization;
+    m_state.set_solution(internal::refined_solution<ConcurrencyTag>(m_state.candidate_solver(), m_state.model, k, np,
+                                                                    retagged_wins));
+    m_state.clustering = Clustering_result();
+    m_state.clustering.weights_are_exact = false;
+    m_state.clustering.choice_reason = internal::refinement_reason(refined_k, k, retagged_wins);
+    return m_state.optimization;
   }
   /// @}
 
@@ -463,22 +405,22 @@ public:
 
   /// The positions of the input, as they were when the object was made: a
   /// readable property map from the vertices of the mesh to points.
-  Input_point_map input_point_map() const { return Input_point_map(m_input_points.cbegin(), m_vim); }
+  Input_point_map input_point_map() const { return m_state.input_point_map(); }
 
   /// Puts the input positions back in the mesh. Clustering, edits and solves
   /// call it first: they start from the input, never from a result.
-  void restore_input() { write_points(m_input_points); }
+  void restore_input() { m_state.write_points(m_state.input_points); }
 
   /// Measures the current mesh against the input (`measure_tilability()`):
   /// the same connectivity with the input positions.
   Tilability_measure measure()
   {
-    require_clustering();
+    m_state.require_clustering();
     return with_concurrency([&] {
       return internal::measure_tilability(
-        internal::Validated_mesh(true), m_mesh, m_mesh,
-        step_parameters().own_maps(m_vpm, face_cluster_map(), face_orientation_map()),
-        parameters::vertex_point_map(input_point_map()).vertex_index_map(m_vim));
+        internal::Validated_mesh(true), m_state.mesh, m_state.mesh,
+        m_state.step_parameters().own_maps(m_state.vpm, face_cluster_map(), face_orientation_map()),
+        parameters::vertex_point_map(input_point_map()).vertex_index_map(m_state.vim));
     });
   }
 
@@ -491,177 +433,26 @@ public:
   /// @}
 
 private:
-  // The interface of the fidelity search (internal/Search/fidelity_search.h),
-  // besides the public steps: the solver of candidates on copies, the
-  // snapshot and restore of a result, the clustering model, and the
-  // description of the clustering with the candidate pool, read and written
-  // without describing the current clustering.
-  template <typename, typename, typename>
-  friend class internal::Fidelity_search;
-  typedef ConcurrencyTag Concurrency_tag;
-  typedef internal::Candidate_solver<PolygonMesh, VertexPointMap, Face_index_map, Vertex_index_map> Candidate_solver;
-  typedef typename Candidate_solver::Solution Solution;
-
-  Candidate_solver candidate_solver() const
-  {
-    return Candidate_solver(m_mesh, m_vpm, step_parameters(), m_input_points, m_faces.quads, m_faces.rank,
-                            m_clustering, m_similarity_threshold * m_mean_edge_length);
-  }
-
-  Solution solution() const
-  {
-    Solution s;
-    s.points.resize(num_vertices(m_mesh));
-    for(auto v : vertices(m_mesh))
-      s.points[get(m_vim, v)] = get(m_vpm, v);
-    s.clustering = m_clustering_model;
-    s.graph = m_graph;
-    s.optimization = m_optimization;
-    return s;
-  }
-
-  void set_solution(const Solution& s)
-  {
-    write_points(s.points);
-    m_clustering_model = s.clustering;
-    m_graph = s.graph;
-    publish_clustering_model();
-    m_optimization = s.optimization;
-  }
-
-  Clustering_result& mutable_clustering() { return m_clustering; }
-  const internal::Face_clustering& clustering_model() const { return m_clustering_model; }
-
-  // Makes `clustering` the current one; the graph is rebuilt when needed.
-  void set_clustering_model(internal::Face_clustering clustering)
-  {
-    m_clustering_model = std::move(clustering);
-    m_graph.reset();
-    publish_clustering_model();
-  }
-
-  // Writes the model into the storage of the maps handed out (in place: they
-  // stay valid) and marks the description of clustering() stale.
-  void publish_clustering_model()
-  {
-    m_clustering_model.write_ids(m_cluster, m_orientation);
-    m_summary_is_stale = true;
-  }
-
-  void describe_current_clustering() const
-  {
-    const internal::Face_clustering& fc = m_clustering_model;
-    const internal::Cluster_shapes shapes =
-      internal::cluster_shapes(m_faces.quads, fc.label, fc.number_of_clusters, m_policy);
-    internal::describe_clustering(fc.label, fc.number_of_clusters, shapes, degree_of_flexibility(),
-                                  m_clustering.weights_are_exact, [&](std::size_t p, std::size_t q) {
-                                    return internal::fast_best_match(m_faces.quads[p], m_faces.quads[q],
-                                                                     m_policy).dissimilarity;
-                                  }, m_clustering);
-    m_summary_is_stale = false;
-  }
-
-  void write_points(const std::vector<Point>& points)
-  {
-    for(auto v : vertices(m_mesh))
-      put(m_vpm, v, points[get(m_vim, v)]);
-  }
-
-  typedef internal::Quad_clusterer<PolygonMesh, Original_face_index_map, Input_point_map> Clusterer;
-
-  // What cluster() and initialize_clusters() start with: the parameters
-  // checked and kept, the clusterer made, the description emptied.
+  // cluster()'s and initialize_clusters()' start: the parameters read, the clusterer made.
   template <typename NamedParameters>
   void start_clustering(const NamedParameters& np)
   {
-    static_assert(!parameters::is_default_parameter<NamedParameters, internal_np::number_of_tiles_t>::value,
-                  "the named parameter number_of_tiles is required");
-    const std::size_t k = internal::tile_count(np, num_faces(m_mesh));
-    restore_input();
-    m_policy = internal::orientation_policy(np);
-    m_similarity_threshold = parameters::choose_parameter(
-      parameters::get_parameter(np, internal_np::similarity_threshold), defaults::similarity_threshold);
-    internal::Clustering_settings settings = internal::clustering_settings(np);
-    // optimize_closest() with the same parameters ends its search at an
-    // exact sweep: the clusterer need not make the other candidates.
-    if(internal::exact_sweep_ends_search(np, num_faces(m_mesh)))
-      settings.sweep_ends_search = [mesh = &m_mesh, fim = m_fim, vim = m_vim, vpm = input_point_map(),
-                                    points = internal::read_points(m_mesh, input_point_map(), m_vim)](
-                                     const std::vector<std::size_t>& label) {
-        return internal::sweep_start(*mesh, fim, vim, vpm, points, label).rows() > 0;
-      };
-    m_clusterer.reset(new Clusterer(m_mesh, m_faces, input_point_map(), m_mean_edge_length, k, settings));
-    m_clustering = Clustering_result();
-    m_summary_is_stale = false;
+    m_state.start_clustering(np, internal::exact_sweep_ends_search(np, num_faces(m_state.mesh)));
   }
 
-  // The chosen candidate, with the orientations of `shapes`, becomes the
-  // current clustering; the clusterer's n x n dissimilarities are freed.
-  void adopt_selected_candidate(const internal::Cluster_shapes& shapes)
-  {
-    m_clusterer.reset();
-    set_clustering_model(internal::Face_clustering{candidate_solver().candidate_labels(m_clustering.chosen_candidate),
-                                                   shapes.orientation, m_clustering.cluster_sizes.size()});
-    m_summary_is_stale = false;
-    m_is_clustered = true;
-  }
-
-  Clusterer& clusterer()
-  {
-    if(!m_clusterer)
-      throw Invalid_input("no clustering under way: call initialize_clusters() first",
-                          Invalid_input::PARAMETER);
-    return *m_clusterer;
-  }
-
-  // Runs f with the parallelism of ConcurrencyTag (the steps that compute)
-  // and returns what it returns.
+  // Runs f with the parallelism of ConcurrencyTag (the steps that compute).
   template <typename F>
   static auto with_concurrency(const F& f) { return internal::with_concurrency<ConcurrencyTag>(f); }
-
-  // The maps, indices, orientation policy and similarity threshold every
-  // step passes on, so that edits, solves and measurements match instances
-  // to S-quads as the clustering did.
-  internal::Surface_parameters<Face_index_map, Vertex_index_map> step_parameters() const
-  {
-    return {m_fim, m_vim, m_policy, m_similarity_threshold};
-  }
 
   // The user's parameters with the object's maps in front (found first); the
   // user's orientation policy, if given, else the clustering's.
   template <typename NP>
   auto with_own_maps(const NP& np)
   {
-    return step_parameters().with_maps(np, m_vpm, face_cluster_map(), face_orientation_map());
+    return m_state.step_parameters().with_maps(np, m_state.vpm, face_cluster_map(), face_orientation_map());
   }
 
-  void require_clustering() const
-  {
-    if(!m_is_clustered)
-      throw Invalid_input("no clustering yet: call cluster() or set_clustering() first",
-                          Invalid_input::PARAMETER);
-  }
-
-  PolygonMesh& m_mesh;
-  VertexPointMap m_vpm;
-  internal::Canonical_faces<Original_face_index_map> m_faces;  // the input quads, in canonical order
-  Face_index_map m_fim;                                        // m_faces.index_map()
-  Vertex_index_map m_vim;
-  std::vector<Point> m_input_points;  // positions of the input, by m_vim
-  double m_mean_edge_length = 0;      // of the input
-  // The clustering parameters of the last cluster() (or set_clustering()).
-  bool m_is_clustered = false;
-  Orientation_policy m_policy = PROPER_RIGID_MOTIONS;
-  double m_similarity_threshold = defaults::similarity_threshold;
-  // The current clustering, and a copy of it as ints that the maps handed out read.
-  internal::Face_clustering m_clustering_model;
-  std::vector<int> m_cluster;
-  std::vector<int> m_orientation;
-  mutable std::optional<Edge_sharing_graph<PolygonMesh> > m_graph;  // built when asked for
-  mutable Clustering_result m_clustering;
-  mutable bool m_summary_is_stale = false;
-  std::unique_ptr<Clusterer> m_clusterer;  // between initialize_clusters() and select_candidate()
-  Optimization_result m_optimization;
+  State m_state;  // the input, the clustering, the pool, the graph, the last optimization
 };
 
 /// \cond SKIP_IN_MANUAL

@@ -63,38 +63,25 @@ struct Locked_visitor
   }
 };
 
-// The solves and predictions of clusterings of a K_set_tilable_surface's
-// input, each on copies of its own (clustering, maps, points). Every member
-// is const and safe to call from several threads; the predictions read the
-// mesh's points, which must hold the input (restore_input()).
-template <typename PolygonMesh, typename VertexPointMap, typename FaceIndexMap, typename VertexIndexMap>
+// The solves and predictions of clusterings of the input of a
+// K_set_tilable_surface (its internal::Tilable_surface_state `State`), each
+// on copies of its own (clustering, maps, points). Every member is const and
+// safe to call from several threads; the predictions read the mesh's points,
+// which must hold the input (restore_input()).
+template <typename State>
 class Candidate_solver
 {
 public:
-  typedef typename boost::property_traits<VertexPointMap>::value_type Point;
-  typedef internal::Solution<PolygonMesh, Point> Solution;
-  typedef Surface_parameters<FaceIndexMap, VertexIndexMap> Parameters;
-  typedef boost::iterator_property_map<typename std::vector<Point>::const_iterator, VertexIndexMap, Point,
-                                       const Point&>
-    Input_point_map;
+  typedef typename State::Solution Solution;
 
-  // `quads` and `rank`: the input quads and the rank of every face in the
-  // canonical order; `clustering`: the candidate pool of the last cluster()
-  // and its K; `tolerance`: the similarity threshold in mesh units, for the
-  // flexible orientations of a candidate.
-  Candidate_solver(PolygonMesh& pm, VertexPointMap vpm, const Parameters& parameters,
-                   const std::vector<Point>& input_points, const std::vector<Panel>& quads,
-                   const std::vector<std::size_t>& rank, const Clustering_result& clustering, double tolerance)
-    : m_mesh(pm), m_vpm(vpm), m_parameters(parameters), m_input_points(input_points), m_quads(quads),
-      m_rank(rank), m_clustering(clustering), m_tolerance(tolerance)
-  {}
+  explicit Candidate_solver(const State& state) : m_state(state) {}
 
-  std::size_t number_of_faces() const { return num_faces(m_mesh); }
+  std::size_t number_of_faces() const { return num_faces(m_state.mesh); }
 
-  // The clusters of candidate `i` (by face index), by canonical index.
+  // The clusters of candidate `i` of the pool (by face index), by canonical index.
   std::vector<std::size_t> candidate_labels(std::size_t i) const
   {
-    return internal::by_canonical_index(m_clustering.candidates[i].face_cluster, m_rank);
+    return internal::by_canonical_index(m_state.clustering.candidates[i].face_cluster, m_state.input_faces.rank);
   }
 
   // Candidate `i` with S-quads and flexible orientations as
@@ -102,9 +89,10 @@ public:
   Face_clustering candidate_model(std::size_t i, std::size_t& degree_of_flexibility) const
   {
     const std::vector<std::size_t> label = candidate_labels(i);
-    const std::size_t k = m_clustering.cluster_sizes.size();
-    const Cluster_shapes shapes = internal::finished_clustering(m_mesh, m_parameters.fim, input_point_map(), m_quads,
-                                                                label, k, m_parameters.policy, m_tolerance);
+    const std::size_t k = m_state.clustering.cluster_sizes.size();
+    const Cluster_shapes shapes =
+      internal::finished_clustering(m_state.mesh, m_state.fim, m_state.input_point_map(), m_state.input_faces.quads,
+                                    label, k, m_state.policy, m_state.similarity_threshold * m_state.mean_length);
     degree_of_flexibility = shapes.degree_of_flexibility;
     return Face_clustering{label, shapes.orientation, k};
   }
@@ -118,7 +106,7 @@ public:
     std::size_t unused_dof;
     Face_clustering model = candidate_model(i, unused_dof);
     Point_matrix start;
-    if(origin_traits(m_clustering.candidates[i].origin).solved_first_from_start)
+    if(origin_traits(m_state.clustering.candidates[i].origin).solved_first_from_start)
       start = swept_start(model);
     return solved_model(std::move(model), np, start.rows() > 0 ? &start : nullptr);
   }
@@ -131,10 +119,10 @@ public:
     Solution solved;
     solved.clustering = std::move(model);
     Model_maps maps(solved.clustering);
-    solved.points = m_input_points;
-    const Point_storage_map points(solved.points.begin(), m_parameters.vim);
-    solved.optimization = internal::optimize_tilable_surface(Validated_mesh(true), m_mesh,
-                                                             m_parameters.with_model_maps(np, points, maps), start);
+    solved.points = m_state.input_points;
+    const Point_storage_map points(solved.points.begin(), m_state.vim);
+    solved.optimization = internal::optimize_tilable_surface(
+      Validated_mesh(true), m_state.mesh, m_state.step_parameters().with_model_maps(np, points, maps), start);
     return solved;
   }
 
@@ -145,9 +133,9 @@ public:
   Point_matrix swept_start(Face_clustering& model) const
   {
     std::vector<Quad_orientation> orientation(model.orientation.size());
-    const Point_matrix start =
-      internal::sweep_start(m_mesh, m_parameters.fim, m_parameters.vim, input_point_map(),
-                            internal::read_points(m_mesh, input_point_map(), m_parameters.vim), model.label, &orientation);
+    const Point_matrix start = internal::sweep_start(
+      m_state.mesh, m_state.fim, m_state.vim, m_state.input_point_map(),
+      internal::read_points(m_state.mesh, m_state.input_point_map(), m_state.vim), model.label, &orientation);
     if(start.rows() > 0)
       model.orientation.swap(orientation);
     return start;
@@ -159,14 +147,16 @@ public:
   double predicted_displacement(const Face_clustering& model, const NP& np) const
   {
     Model_maps maps(model);
-    return internal::predict_displacement(Validated_mesh(true), m_mesh, m_parameters.with_model_maps(np, m_vpm, maps)).max;
+    return internal::predict_displacement(Validated_mesh(true), m_state.mesh,
+                                          m_state.step_parameters().with_model_maps(np, m_state.vpm, maps))
+      .max;
   }
 
   // The same for `model` with clusters `a` and `b` merged, judged on the input quads.
   template <typename NP>
   double predicted_displacement_after_merge(Face_clustering model, std::size_t a, std::size_t b, const NP& np) const
   {
-    internal::merge_clusters(model, m_quads, a, b, m_parameters.policy);
+    internal::merge_clusters(model, m_state.input_faces.quads, a, b, m_state.policy);
     return predicted_displacement(model, np);
   }
 
@@ -177,18 +167,18 @@ public:
   {
     moved.assign(model.number_of_clusters, 0.0);
     size.assign(model.number_of_clusters, 0);
-    for(auto f : faces(m_mesh))
+    for(auto f : faces(m_state.mesh))
     {
       double sum = 0;
-      for(auto v : CGAL::vertices_around_face(halfedge(f, m_mesh), m_mesh))
-        sum += internal::distance(get(m_vpm, v), m_input_points[get(m_parameters.vim, v)]);
-      moved[model.label[get(m_parameters.fim, f)]] += sum;
-      ++size[model.label[get(m_parameters.fim, f)]];
+      for(auto v : CGAL::vertices_around_face(halfedge(f, m_state.mesh), m_state.mesh))
+        sum += internal::distance(get(m_state.vpm, v), m_state.input_points[get(m_state.vim, v)]);
+      moved[model.label[get(m_state.fim, f)]] += sum;
+      ++size[model.label[get(m_state.fim, f)]];
     }
   }
 
   // The mesh's points now.
-  Point_matrix current_points() const { return internal::read_points(m_mesh, m_vpm, m_parameters.vim); }
+  Point_matrix current_points() const { return internal::read_points(m_state.mesh, m_state.vpm, m_state.vim); }
 
   // The clustering `model` split at its largest cluster (the first such), as
   // split_cluster() does, until it has `k` clusters.
@@ -198,27 +188,21 @@ public:
     {
       const std::vector<std::size_t> size = model.cluster_sizes();
       CGAL::Random random(defaults::random_seed);
-      internal::split_cluster(model, m_quads, std::size_t(std::max_element(size.begin(), size.end()) - size.begin()),
-                    m_parameters.policy, random);
+      internal::split_cluster(model, m_state.input_faces.quads,
+                              std::size_t(std::max_element(size.begin(), size.end()) - size.begin()), m_state.policy,
+                              random);
     }
     return model;
   }
 
 private:
+  typedef typename State::Point Point;
   // Points stored by vertex index: the positions of a solve on a copy.
-  typedef boost::iterator_property_map<typename std::vector<Point>::iterator, VertexIndexMap, Point, Point&>
+  typedef boost::iterator_property_map<typename std::vector<Point>::iterator, typename State::Vertex_index_map, Point,
+                                       Point&>
     Point_storage_map;
 
-  Input_point_map input_point_map() const { return Input_point_map(m_input_points.cbegin(), m_parameters.vim); }
-
-  PolygonMesh& m_mesh;
-  VertexPointMap m_vpm;
-  Parameters m_parameters;
-  const std::vector<Point>& m_input_points;
-  const std::vector<Panel>& m_quads;  // the input quads, in canonical order
-  const std::vector<std::size_t>& m_rank;
-  const Clustering_result& m_clustering;
-  double m_tolerance;
+  const State& m_state;
 };
 
 } // namespace internal

@@ -57,10 +57,10 @@
 //    K = 7: every candidate and a local-global projection stall near 5e-2).
 //
 // A result replaces the best one only if is_better(). The search runs on the
-// public steps of the surface and on the few private members it befriends
-// for it (K_set_tilable_surface, "The interface of the fidelity search"):
-// its Candidate_solver, the snapshot and restore of a Solution, the
-// clustering model and the candidate pool with the choice it describes.
+// public steps of the surface (optimize(), the edits, restore_input()) and
+// on its state (Tilable_surface_state), through which it solves candidates on
+// copies (Candidate_solver), keeps and restores results (Solution), and
+// reads the pool and writes the choice (Clustering_result).
 
 #include <CGAL/Tilable_surfaces/Edge_sharing_graph.h>
 #include <CGAL/Tilable_surfaces/cluster_quads.h>
@@ -108,18 +108,16 @@ bool exact_sweep_ends_search(const NP& np, std::size_t number_of_faces)
 }
 
 // The fidelity search on `Surface` (a K_set_tilable_surface with a
-// candidate pool), with the parameters `NamedParameters` of its optimize(),
-// which pass `Visitor` on by reference.
-template <typename Surface, typename NamedParameters, typename Visitor>
+// candidate pool) and its `State`, with the parameters `NamedParameters` of
+// its optimize(), which pass `Visitor` on by reference.
+template <typename ConcurrencyTag, typename Surface, typename State, typename NamedParameters, typename Visitor>
 class Fidelity_search
 {
-  typedef typename Surface::Concurrency_tag Concurrency_tag;
-  typedef typename Surface::Candidate_solver Solver;
-  typedef typename Surface::Solution Solution;
+  typedef typename State::Solution Solution;
 
 public:
-  Fidelity_search(Surface& surface, const NamedParameters& np, Visitor& visitor)
-    : m_surface(surface), m_np(np), m_visitor(visitor), m_solver(surface.candidate_solver())
+  Fidelity_search(Surface& surface, State& state, const NamedParameters& np, Visitor& visitor)
+    : m_surface(surface), m_state(state), m_np(np), m_visitor(visitor), m_solver(state.candidate_solver())
   {
     using parameters::choose_parameter;
     using parameters::get_parameter;
@@ -144,19 +142,19 @@ public:
     {
       m_best = std::move(*m_best_sweep);
       m_best_sweep.reset();
-      m_surface.mutable_clustering().chosen_candidate = m_best_sweep_index;
+      m_state.clustering.chosen_candidate = m_best_sweep_index;
     }
-    m_surface.set_solution(m_best);
+    m_state.set_solution(m_best);
     run_edit_rounds();
     // The sweep, if the result did not beat it.
     const bool sweep_chosen =
       m_ranked.empty() || (m_best_sweep && is_better(m_best_sweep->optimization, m_best.optimization));
     if(m_best_sweep && sweep_chosen)
     {
-      m_surface.set_solution(*m_best_sweep);
-      m_surface.mutable_clustering().chosen_candidate = m_best_sweep_index;
+      m_state.set_solution(*m_best_sweep);
+      m_state.clustering.chosen_candidate = m_best_sweep_index;
     }
-    Clustering_result& clustering = m_surface.mutable_clustering();
+    Clustering_result& clustering = m_state.clustering;
     clustering.choice_reason = choice_reason(sweep_chosen) + "; " + clustering.choice_reason;
     clustering.number_of_edit_rounds = std::size_t(m_rounds_done);
     return m_surface.optimization();
@@ -164,9 +162,9 @@ public:
 
 private:
   template <typename F>
-  static auto with_concurrency(const F& f) { return internal::with_concurrency<Concurrency_tag>(f); }
+  static auto with_concurrency(const F& f) { return internal::with_concurrency<ConcurrencyTag>(f); }
 
-  const std::vector<Clustering_candidate>& pool() const { return m_surface.mutable_clustering().candidates; }
+  const std::vector<Clustering_candidate>& pool() const { return m_state.clustering.candidates; }
 
   // Step 1: the candidates solved first from their exact start (the sweep
   // clusterings), a tilable result within seconds whatever the size. Kept
@@ -265,7 +263,7 @@ private:
   void predict_candidates()
   {
     m_surface.restore_input();
-    std::vector<Clustering_candidate>& pool = m_surface.mutable_clustering().candidates;
+    std::vector<Clustering_candidate>& pool = m_state.clustering.candidates;
     with_concurrency([&] {
       internal::parallel_for(pool.size(), [&](std::size_t i) {
         if(origin_traits(pool[i].origin).solved_first_from_start)
@@ -289,7 +287,7 @@ private:
       if(r == 0 || is_better(solved.optimization, m_best.optimization))
       {
         m_best = std::move(solved);
-        m_surface.mutable_clustering().chosen_candidate = m_ranked[r];
+        m_state.clustering.chosen_candidate = m_ranked[r];
       }
       m_visitor.phase("candidate optimization", m_timer.time());
     }
@@ -359,13 +357,13 @@ private:
       m_surface.optimize(m_np.number_of_iterations(iteration_cap()));
       if(is_better(m_surface.optimization(), m_best.optimization))
       {
-        m_best = m_surface.solution();
+        m_best = m_state.solution();
         failed_in_a_row = 0;
       }
       else
         ++failed_in_a_row;
       const bool round_stopped = m_surface.optimization().stopped_by_visitor;
-      m_surface.set_solution(m_best);
+      m_state.set_solution(m_best);
       m_visitor.phase("improvement round", m_timer.time());
       if(round_stopped)
         break;
@@ -401,7 +399,7 @@ private:
     const std::size_t k = m_surface.number_of_clusters();
     std::vector<double> moved;
     std::vector<std::size_t> size;
-    m_solver.corner_displacements(m_surface.clustering_model(), moved, size);
+    m_solver.corner_displacements(m_state.model, moved, size);
     const Optimization_result& current = m_surface.optimization();
     const bool repair = !current.converged;
     const std::vector<double>& misfit = current.measure.cluster_congruence_errors;
@@ -454,7 +452,7 @@ private:
     if(pairs.size() > 1)
       with_concurrency([&] {
         internal::parallel_for(pairs.size(), [&](std::size_t i) {
-          prediction[i] = m_solver.predicted_displacement_after_merge(m_surface.clustering_model(),
+          prediction[i] = m_solver.predicted_displacement_after_merge(m_state.model,
                                                                       pairs[i].second.first, pairs[i].second.second,
                                                                       m_np);
         });
@@ -474,9 +472,10 @@ private:
   }
 
   Surface& m_surface;
+  State& m_state;
   const NamedParameters& m_np;
   Visitor& m_visitor;
-  const Solver m_solver;
+  const Candidate_solver<State> m_solver;
   std::size_t m_optimized = 0;  // number_of_optimized_candidates
   int m_rounds = 0;             // number_of_improvement_rounds
   int m_user_iterations = 0;    // number_of_iterations
@@ -490,14 +489,16 @@ private:
   int m_rounds_done = 0;
 };
 
-// K_set_tilable_surface::optimize_closest() on `surface`, whose pool is not empty.
-template <typename Surface, typename NamedParameters>
-const Optimization_result& optimize_closest(Surface& surface, const NamedParameters& user_np)
+// K_set_tilable_surface::optimize_closest() on `surface` and its `state`,
+// whose pool is not empty.
+template <typename ConcurrencyTag, typename Surface, typename State, typename NamedParameters>
+const Optimization_result& optimize_closest(Surface& surface, State& state, const NamedParameters& user_np)
 {
   auto&& visitor = visitor_of(user_np);
   const auto np = with_visitor(user_np, visitor);
-  Fidelity_search<Surface, std::remove_cv_t<decltype(np)>, std::remove_reference_t<decltype(visitor)> > search(
-    surface, np, visitor);
+  typedef std::remove_reference_t<decltype(visitor)> Visitor;
+  Fidelity_search<ConcurrencyTag, Surface, State, std::remove_cv_t<decltype(np)>, Visitor> search(surface, state, np,
+                                                                                                  visitor);
   return search.run();
 }
 

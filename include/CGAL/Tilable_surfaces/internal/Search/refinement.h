@@ -54,7 +54,8 @@ typename Solver::Solution refined_solution(const Solver& solver, const Face_clus
   std::vector<Solution> solved(ways);
   with_concurrency<ConcurrencyTag>([&] {
     parallel_for(ways, [&](std::size_t j) {
-      solved[j] = j == 0 ? solver.solved_model(kept, solve_np, &start) : solver.solved_model(retagged, solve_np, nullptr);
+      solved[j] = j == 0 ? solver.solved_model(kept, solve_np, &start)
+                         : solver.solved_model(retagged, solve_np, nullptr);
     });
   });
   retagged_wins = ways == 2 && is_better(solved[1].optimization, solved[0].optimization);

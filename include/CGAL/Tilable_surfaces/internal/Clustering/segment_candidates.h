@@ -32,6 +32,7 @@
 
 #include <CGAL/Tilable_surfaces/internal/Clustering/fast_match.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/strip_candidates.h>
+#include <CGAL/Tilable_surfaces/internal/tuning.h>
 
 #include <CGAL/boost/graph/helpers.h>
 
@@ -557,6 +558,60 @@ split_segment_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMa
       result.push_back(labels[order[i]]);
   return result;
 }
+
+// The candidates of clusterings by labels (the segment, split segment and
+// sweep generators): each face oriented by its best match.
+template <typename Candidate, typename Origin>
+std::vector<Candidate> best_match_candidates(std::vector<std::vector<std::size_t> > labels, Origin origin)
+{
+  std::vector<Candidate> result(labels.size());
+  for(std::size_t i = 0; i < labels.size(); ++i)
+  {
+    result[i].origin = origin;
+    result[i].label = std::move(labels[i]);
+  }
+  return result;
+}
+
+// The grid-segment candidate generator (CandidateGenerator, origin
+// GRID_SEGMENTS): with `use_segment_candidates`, K > 1 and no triangle (a
+// quad grid has none), the segment clusterings with K molds
+// (segment_clusterings()).
+struct Grid_segment_generator
+{
+  template <typename Context>
+  std::vector<typename Context::Candidate> operator()(const Context& context) const
+  {
+    if(!context.settings.use_segments || context.k <= 1 || context.has_triangles)
+      return std::vector<typename Context::Candidate>();
+    return best_match_candidates<typename Context::Candidate>(
+      segment_clusterings(context.mesh, context.face_index, context.vertex_point, context.k, context.policy),
+      Context::GRID_SEGMENTS);
+  }
+};
+
+// The split-segment candidate generator (CandidateGenerator, origin
+// GRID_SEGMENTS): as Grid_segment_generator, up to large_mesh_faces faces,
+// the `tuning::split_segment_candidates` segment clusterings of fewer molds
+// split to K of least length deviation (split_segment_clusterings(), each
+// drawing from a generator of its own seeded by `random_seed`). They cost
+// about 1 ms per face at K = 100 (10,000 faces: 11 s on 2 cores); above
+// large_mesh_faces the sweeps serve grids.
+struct Split_segment_generator
+{
+  template <typename Context>
+  std::vector<typename Context::Candidate> operator()(const Context& context) const
+  {
+    if(!context.settings.use_segments || context.k <= 1 || context.has_triangles ||
+       context.panels.size() > large_mesh_faces)
+      return std::vector<typename Context::Candidate>();
+    return best_match_candidates<typename Context::Candidate>(
+      split_segment_clusterings(context.mesh, context.face_index, context.vertex_point, context.panels,
+                                context.descriptors, context.k, context.policy, context.seed,
+                                tuning::split_segment_candidates),
+      Context::GRID_SEGMENTS);
+  }
+};
 
 } // namespace internal
 } // namespace Tilable_surfaces

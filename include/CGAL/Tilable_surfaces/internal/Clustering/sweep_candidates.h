@@ -696,6 +696,26 @@ sweep_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, s
   return result;
 }
 
+// The sweep candidate generator (CandidateGenerator, origin GRID_SWEEPS):
+// with `use_segment_candidates`, the sweep clusterings (sweep_clusterings(),
+// also of meshes with triangles as fans around poles), each with an exact
+// start (sweep_start()) and its faces oriented by their best match.
+struct Sweep_generator
+{
+  template <typename Context>
+  std::vector<typename Context::Candidate> operator()(const Context& context) const
+  {
+    if(!context.settings.use_segments)
+      return std::vector<typename Context::Candidate>();
+    std::vector<typename Context::Candidate> result = best_match_candidates<typename Context::Candidate>(
+      sweep_clusterings(context.mesh, context.face_index, context.vertex_point, context.k, context.policy),
+      Context::GRID_SWEEPS);
+    for(typename Context::Candidate& candidate : result)
+      candidate.has_exact_start = true;
+    return result;
+  }
+};
+
 } // namespace internal
 } // namespace Tilable_surfaces
 } // namespace CGAL

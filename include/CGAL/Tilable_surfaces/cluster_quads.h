@@ -65,7 +65,8 @@ struct Clustering_candidate : Candidate_origins
   /// Its length deviation (`Edge_sharing_graph::length_deviation()`), with
   /// the same orientations.
   double length_deviation = 0;
-  /// The selection score (lower is better); see `cluster_quads()`.
+  /// The selection score (lower is better): W / W1 + flexibility_penalty x
+  /// (D0 - D) / D0 + structure_penalty x V / V1; see `cluster_quads()`.
   double score = 0;
   /// Its predicted displacement (`Displacement_prediction::max`) once
   /// `K_set_tilable_surface::optimize_closest()` ranked it; else 0 (always
@@ -110,7 +111,8 @@ struct Clustering_result
   double initial_threshold = 0;
   /// The final candidate pool: the beam, best score first, then the k-means
   /// configuration if it was asked for and has K non-empty clusters, the
-  /// quad-strip, grid-segment and sweep clusterings (`Clustering_candidate::Origin`).
+  /// quad-strip, grid-segment and sweep clusterings (`Clustering_candidate::Origin`,
+  /// in the order of the registered generators).
   std::vector<Clustering_candidate> candidates;
   /// Index in `candidates` of the returned configuration.
   std::size_t chosen_candidate = 0;
@@ -290,10 +292,11 @@ public:
   // 2. The last beam of binary merges down to K (Merge_generators).
   void merge_to_tile_count(Clustering_result& result) { run_generators(Merge_generators(), result); }
 
-  // 3. The other candidates (Other_generators): the sweeps first, pooled
-  // last. When a sweep ends the search (Clustering_settings::sweep_ends_search),
-  // the other candidates would never be optimized, and are not made (a
-  // 100k-quad roof clusters in 2.4 s instead of 44.1 s).
+  // 3. The other candidates (Other_generators). The sweeps, solved first
+  // from their exact start, are made first and pooled last: when one ends
+  // the search (Clustering_settings::sweep_ends_search), the other
+  // candidates would never be optimized, and are not made (a 100k-quad roof
+  // clusters in 2.4 s instead of 44.1 s).
   void add_other_candidates(Clustering_result& result) { run_generators(Other_generators(), result); }
 
   // 4. The candidate of lowest score, its S-quads and orientations.
@@ -569,21 +572,32 @@ Clustering_result cluster_quads(Validated_mesh, const PolygonMesh& pm, const Nam
 ///    `use_auto_merge`, every pair of clusters whose S-quad edges lie in the
 ///    same 4 components of the edge-sharing graph, which keeps the degree of
 ///    flexibility). Each proposal gets the score
-///    <center>score = W / W1 + flexibility_penalty x (D0 - D) / D0</center>
+///    <center>score = W / W1 + flexibility_penalty x (D0 - D) / D0
+///    + structure_penalty x V / V1</center>
 ///    with W the configuration's weight, W1 the weight of the single-cluster
-///    configuration, D its degree of flexibility (a copy of the parent's
-///    `Edge_sharing_graph` amended by `merge_clusters()`) and D0 that of the
-///    threshold clustering. The `number_of_candidates` best distinct proposals
-///    form the beam of the next K.
-/// -# <i>Final choice</i>: the pool is the last beam plus, with
+///    configuration (one cluster per panel kind on a mesh with triangles), D
+///    its degree of flexibility (a copy of the parent's `Edge_sharing_graph`
+///    amended by `merge_clusters()`), D0 that of the threshold clustering
+///    (at least 1 in the division), V its length deviation
+///    (`Edge_sharing_graph::length_deviation()`: the spread of the input's
+///    edge lengths within the components of the edge-sharing graph) and V1
+///    the spread of all the mesh's edge lengths. The `number_of_candidates`
+///    best distinct proposals form the beam of the next K.
+/// -# <i>Final choice</i>: the pool is the last beam plus the candidates of
+///    the other generators (user manual, section Candidate generators): with
 ///    `use_kmeans_candidate`, a k-means configuration (k-means++ seeded by
 ///    `random_seed`, on the 7 descriptor components), with
 ///    `use_strip_candidates` the quad-strip clusterings, and with
 ///    `use_segment_candidates`, on a mesh whose quads form a grid, the
 ///    segment clusterings (runs of rows, each a segment of column molds or a
-///    band of one mold, chosen by dynamic programming; see the user manual);
-///    the configuration with the lowest score is returned (on a tie, the
-///    first in the pool).
+///    band of one mold, chosen by dynamic programming; see the user manual)
+///    and, last, the sweep clusterings. Every candidate gets the score above,
+///    its D and V measured with each face oriented by its best match (the
+///    k-means one: on its cluster's face nearest to the mean descriptor; the
+///    beam's: as the beam tracked them). The candidate with the lowest score
+///    among those selectable by score (all but the sweeps) is returned (on a
+///    tie, the first in the pool); `Clustering_result::choice_reason` states
+///    its three terms.
 /// -# <i>S-quads and orientations</i>: each cluster's S-quad is the Procrustes
 ///    mean of its instances. Each face is tagged with an <i>admissible</i>
 ///    orientation: a near-tie, whose dissimilarity to its S-quad exceeds the
@@ -628,6 +642,8 @@ Clustering_result cluster_quads(Validated_mesh, const PolygonMesh& pm, const Nam
 ///   \cgalParamNBegin{flexibility_penalty} weight lambda of the lost degrees of
 ///     flexibility in the score; default 0.5. 0 reproduces the paper's pure weight
 ///     criterion. \cgalParamNEnd
+///   \cgalParamNBegin{structure_penalty} weight mu of the length deviation in the
+///     score; default 1. \cgalParamNEnd
 ///   \cgalParamNBegin{use_kmeans_candidate} default `true`. \cgalParamNEnd
 ///   \cgalParamNBegin{use_auto_merge} default `true`. \cgalParamNEnd
 ///   \cgalParamNBegin{use_strip_candidates} default `true`. \cgalParamNEnd

@@ -37,6 +37,7 @@
 // by increasing cost, so the rest of them is skipped too.
 // The beam is the same as without this pruning.
 
+#include <CGAL/Tilable_surfaces/internal/tuning.h>
 #include <CGAL/Tilable_surfaces/Edge_sharing_graph.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/fast_match.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/initial_clustering.h>
@@ -239,7 +240,7 @@ private:
   static std::size_t no_group() { return std::size_t(-1); }
 
   // Up to this many groups, every pair is proposed (see the file comment).
-  static std::size_t exhaustive_limit() { return 128; }
+  static std::size_t exhaustive_limit() { return tuning::beam_exhaustive_groups; }
 
   // Groups of quads and of triangles never merge: their cost is infinite,
   // which no bound admits.

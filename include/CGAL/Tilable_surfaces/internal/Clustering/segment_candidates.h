@@ -459,7 +459,7 @@ segment_options(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, std
     const Quad_grid& grid = s->grid;
     // The dynamic program takes about 4 rows^2 K steps.
     if(grid.rows == 0 || grid.rows > max_rows || grid.columns > max_columns ||
-       double(grid.rows) * double(grid.rows) * double(k) > 1e8)
+       double(grid.rows) * double(grid.rows) * double(k) > tuning::segment_runs_work)
       continue;
     std::vector<Run_option>& options = s->options;
     options.reserve(4); // at most 4: the sets' pointers stay valid
@@ -494,7 +494,8 @@ segment_options(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, std
 template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
 std::vector<std::vector<std::size_t> >
 segment_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, std::size_t k,
-                    Orientation_policy policy, std::size_t max_rows = 400, std::size_t max_columns = 400)
+                    Orientation_policy policy, std::size_t max_rows = tuning::segment_grid_max_rows,
+                    std::size_t max_columns = tuning::segment_grid_max_columns)
 {
   std::vector<std::vector<std::size_t> > result;
   for(const std::unique_ptr<Segment_options>& s : segment_options(pm, fim, vpm, k, policy, max_rows, max_columns))
@@ -514,7 +515,7 @@ segment_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
 // structure, where the best runs with exactly k molds may change it
 // (seashell stand-in, K = 96: those that end exact and uncrossed end at
 // 4.8% of the diagonal or farther, the one of 80 molds split to 96 at
-// 1.6%, results.md stop 35); the length
+// 1.6%); the length
 // deviation tells the structures that fit (there, 80 and 60 molds rank
 // first by it, as by the predicted displacement). The splits of each
 // partition draw from a generator of their own, seeded by `seed`, so the
@@ -524,7 +525,8 @@ std::vector<std::vector<std::size_t> >
 split_segment_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
                           const std::vector<Panel>& quads, const std::vector<Quad_descriptor>& descriptors,
                           std::size_t k, Orientation_policy policy, unsigned int seed, std::size_t count,
-                          std::size_t max_rows = 400, std::size_t max_columns = 400)
+                          std::size_t max_rows = tuning::segment_grid_max_rows,
+                          std::size_t max_columns = tuning::segment_grid_max_columns)
 {
   std::vector<std::vector<std::size_t> > labels;
   std::vector<std::size_t> molds;

@@ -32,6 +32,7 @@
 // must be the identity: M is made a rotation by a whole number of turns
 // over the R rows (close_up()), and the swept surface is one of revolution.
 
+#include <CGAL/Tilable_surfaces/internal/tuning.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/pole_fans.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/segment_candidates.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/trimmed_grid.h>
@@ -161,10 +162,9 @@ Quad_grid full_or_trimmed_grid(const PolygonMesh& pm, FaceIndexMap fim, VertexPo
 // directions carried across the mesh (quad_strips()) when they make it a
 // grid, full or trimmed, else each face's own parities. On a grid whose
 // faces start at any corner, only the carried strips are its rows and
-// columns (the tunnel so started, K = 10: 2.07% -> 1.56% Hausdorff, as the
-// bundled file, once its face 0 sets the directions); on
-// other meshes, carried strips made free_negshell_marc_anet's result cross
-// itself (results.md, stops 31 and 32).
+// columns (the tunnel so started, K = 10: 1.56% Hausdorff with the carried
+// strips, as the bundled file, 2.07% with each face's parities); on other
+// meshes, carried strips make free_negshell_marc_anet's result cross itself.
 template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
 std::array<std::vector<std::size_t>, 2> candidate_strips(const PolygonMesh& pm, FaceIndexMap fim,
                                                          VertexPointMap vpm)
@@ -438,7 +438,7 @@ inline std::vector<std::size_t> screw_column_runs(const Eigen::Matrix3Xd& sectio
   const Screw_coordinates coordinates(motion);
   // Runs of at most half the ring, and O(columns^3 / 8) work at most ~1e8.
   const std::size_t longest =
-    (std::max)(std::size_t(2), (std::min)(columns / 2, std::size_t(std::sqrt(1e8 / double(columns)))));
+    (std::max)(std::size_t(2), (std::min)(columns / 2, std::size_t(std::sqrt(tuning::screw_column_runs_work / double(columns)))));
   const double infinity = (std::numeric_limits<double>::max)();
   // cost[c * (longest + 1) + l]: the run of l columns from column c; none
   // when its steps shrink to less than half their mean length (a section
@@ -637,7 +637,7 @@ quad_grid_sweep_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPoint
       continue;
     }
     const std::size_t runs = (std::min)(rows, k / columns), left = k - runs * columns;
-    if(double(rows) * double(rows) * double(runs) > 1e8)
+    if(double(rows) * double(rows) * double(runs) > tuning::sweep_runs_work)
       continue;
     std::vector<std::size_t> all_columns(columns);
     std::iota(all_columns.begin(), all_columns.end(), std::size_t(0));

@@ -87,6 +87,14 @@ constexpr double sweep_runs_work = 1e8;
 // Screw column runs: runs of at most sqrt(this / columns) columns, so that
 // the O(columns^3 / 8) search stays near this many steps.
 constexpr double screw_column_runs_work = 1e8;
+// Screw column runs: a run whose steps shrink to less than this fraction of
+// their mean length is left out (a section running straight away from the
+// axis would collapse onto one point).
+constexpr double screw_run_min_step = 0.5;
+// Below this angle (radians) the motion of a one-run sweep with column runs
+// is taken as its translation: the helices' axis would be far away and
+// ill-conditioned, and a translation commutes with the straight runs.
+constexpr double screw_angle_min = 1e-6;
 // Trimmed grids: a bounding box of more cells per face is not a trimmed grid
 // worth sweeping (an outline with few faces inside).
 constexpr double trimmed_grid_max_cells_per_face = 16.0;

@@ -201,11 +201,6 @@ struct Swept_section
   }
 };
 
-// Below this angle (radians) the motion of a one-run sweep with column runs
-// is taken as its translation: the helices' axis would be far away and
-// ill-conditioned, and a translation commutes with the straight runs.
-constexpr double screw_angle_min = 1e-6;
-
 // The rigid motion closest to `m` whose `rows`-th power is the identity: a
 // rotation about m's axis by a whole number of turns over the rows, at
 // least one. False when m turns by less than half a row's share of a turn.
@@ -229,7 +224,7 @@ inline bool close_up(Eigen::Matrix4d& m, std::size_t rows)
 
 // `ring`: the input rings, `run_of`: the run of each row, `present`: per
 // ring, 1 or 0 per point (present_grid_rings()). With `column_runs`, a single
-// run whose motion hardly turns is made a translation (screw_angle_min).
+// run whose motion hardly turns is made a translation (tuning::screw_angle_min).
 // With `closed` (the last ring is the first), a single run whose motion is
 // made to close up (close_up()).
 inline Swept_section swept_section(const std::vector<Eigen::Matrix3Xd>& ring, const std::vector<std::size_t>& run_of,
@@ -267,7 +262,7 @@ inline Swept_section swept_section(const std::vector<Eigen::Matrix3Xd>& ring, co
     s.valid = false;
     return s;
   }
-  if(column_runs && Eigen::AngleAxisd(Eigen::Matrix3d(s.motion[0].topLeftCorner<3, 3>())).angle() < screw_angle_min)
+  if(column_runs && Eigen::AngleAxisd(Eigen::Matrix3d(s.motion[0].topLeftCorner<3, 3>())).angle() < tuning::screw_angle_min)
     s.motion[0].topLeftCorner<3, 3>().setIdentity();
   const std::size_t middle = rows / 2;
   s.frame.assign(rows + 1, Eigen::Matrix4d::Identity());
@@ -303,7 +298,7 @@ public:
   explicit Screw_coordinates(const Eigen::Matrix4d& m)
   {
     const Eigen::AngleAxisd turn(Eigen::Matrix3d(m.topLeftCorner<3, 3>()));
-    m_translation = turn.angle() < screw_angle_min;
+    m_translation = turn.angle() < tuning::screw_angle_min;
     if(m_translation)
       return;
     m_axis = turn.axis();
@@ -456,7 +451,7 @@ inline std::vector<std::size_t> screw_column_runs(const Eigen::Matrix3Xd& sectio
         if(j > 0)
           length += (section.col(v) - section.col((v + section.cols() - 1) % section.cols())).norm();
       }
-      if((fit.col(1) - fit.col(0)).norm() >= 0.5 * length / double(l))
+      if((fit.col(1) - fit.col(0)).norm() >= tuning::screw_run_min_step * length / double(l))
         cost[c * (longest + 1) + l] = sum;
     }
   std::vector<std::size_t> cuts(1, 0);

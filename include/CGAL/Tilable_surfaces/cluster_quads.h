@@ -17,14 +17,14 @@
 #include <CGAL/Tilable_surfaces/visitor.h>
 #include <CGAL/Tilable_surfaces/internal/canonical_face_order.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/beam_search.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/candidate_generator.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/cluster_analysis.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/descriptor_index.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/flexible_orientations.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/initial_clustering.h>
-#include <CGAL/Tilable_surfaces/internal/Clustering/kmeans.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/merge_costs.h>
-#include <CGAL/Tilable_surfaces/internal/Clustering/sweep_candidates.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/strip_candidates.h>
+#include <CGAL/Tilable_surfaces/internal/tuning.h>
 
 #include <CGAL/Random.h>
 #include <CGAL/Real_timer.h>
@@ -48,20 +48,13 @@ namespace Tilable_surfaces {
 
 /// \ingroup PkgTilableSurfacesRef
 /// One configuration of the final candidate pool of `cluster_quads()`.
-struct Clustering_candidate
+/// Its `Origin` (the enum `Candidate_origins::Origin`, whose values are
+/// registered with their generators in
+/// internal/Clustering/candidate_generators.h) says which candidate
+/// generator made it (user manual, section Candidate generators).
+struct Clustering_candidate : Candidate_origins
 {
-  /// Where the configuration comes from.
-  /// `GRID_SEGMENTS`: runs of rows of a quad grid, each a segment of column
-  /// molds or a band of one mold, with K molds, or with fewer and their
-  /// largest clusters split by shape until K (user manual, section
-  /// TS_Fidelity).
-  /// `GRID_SWEEPS`: every column of a run of rows of a quad grid is one
-  /// cluster; such a clustering is exact on a swept surface built directly
-  /// (user manual, section TS_Sweeps). These are never the configuration
-  /// `cluster_quads()` returns; `K_set_tilable_surface::optimize_closest()`
-  /// solves them first, from that surface.
-  enum Origin { HIERARCHICAL, KMEANS, QUAD_STRIPS, GRID_SEGMENTS, GRID_SWEEPS };
-  Origin origin = HIERARCHICAL;  ///< the search that produced it
+  Origin origin = HIERARCHICAL;  ///< the generator that produced it
   /// Its weight, in the units of the clustering path (see `Clustering_result::path`):
   /// sum of pairwise dissimilarities on the exact path, sum of pairwise squared
   /// descriptor distances on the descriptor path.
@@ -72,7 +65,8 @@ struct Clustering_candidate
   /// Its length deviation (`Edge_sharing_graph::length_deviation()`), with
   /// the same orientations.
   double length_deviation = 0;
-  /// The selection score (lower is better); see `cluster_quads()`.
+  /// The selection score (lower is better): W / W1 + flexibility_penalty x
+  /// (D0 - D) / D0 + structure_penalty x V / V1; see `cluster_quads()`.
   double score = 0;
   /// Its predicted displacement (`Displacement_prediction::max`) once
   /// `K_set_tilable_surface::optimize_closest()` ranked it; else 0 (always
@@ -117,7 +111,8 @@ struct Clustering_result
   double initial_threshold = 0;
   /// The final candidate pool: the beam, best score first, then the k-means
   /// configuration if it was asked for and has K non-empty clusters, the
-  /// quad-strip, grid-segment and sweep clusterings (`Clustering_candidate::Origin`).
+  /// quad-strip, grid-segment and sweep clusterings (`Clustering_candidate::Origin`,
+  /// in the order of the registered generators).
   std::vector<Clustering_candidate> candidates;
   /// Index in `candidates` of the returned configuration.
   std::size_t chosen_candidate = 0;
@@ -200,24 +195,7 @@ void describe_clustering(const std::vector<std::size_t>& label, std::size_t k, c
   for(double w : result.cluster_weights) result.total_weight += w;
 }
 
-// What cluster_quads() reads from its named parameters, besides K and the maps.
-struct Clustering_settings
-{
-  std::size_t width;          // number_of_candidates
-  double relative_threshold;  // similarity_threshold
-  double lambda, mu;          // flexibility_penalty, structure_penalty
-  bool use_kmeans, auto_merge, use_strips, use_segments;
-  Clustering_path path;
-  std::size_t exact_limit;
-  Orientation_policy policy;
-  unsigned int seed;
-  // Set by K_set_tilable_surface::cluster() when an exact sweep would end
-  // its search (above large_mesh_faces, no other candidate to optimize):
-  // whether the sweep clustering (by canonical index) has an exact start.
-  // If one has, the k-means, strip and segment candidates are not made.
-  std::function<bool(const std::vector<std::size_t>&)> sweep_ends_search;
-};
-
+// The Clustering_settings (candidate_generator.h) of the named parameters `np`.
 template <typename NP>
 Clustering_settings clustering_settings(const NP& np)
 {
@@ -248,7 +226,10 @@ Clustering_settings clustering_settings(const NP& np)
 // The stages of cluster_quads() on a checked mesh, in their order (the
 // random draws of the splits, the k-means and the strips come in that order):
 // threshold clustering, beam of merges, the other candidates, the choice, the
-// S-quads and orientations of the chosen one. The faces are visited in the
+// S-quads and orientations of the chosen one. The candidates come from the
+// generators registered in candidate_generators.h (Merge_generators, then
+// Other_generators), each given the same Generator_context; the clusterer
+// measures, scores and pools what they return. The faces are visited in the
 // canonical order (canonical_face_order.h), and indexed by it, except in the
 // candidate pool, which is by original face index; the returned orientations
 // are by canonical index.
@@ -256,6 +237,7 @@ template <typename PolygonMesh, typename OriginalFaceIndexMap, typename VertexPo
 class Quad_clusterer
 {
   typedef Canonical_face_index_map<OriginalFaceIndexMap> FaceIndexMap;
+  typedef Generator_context<PolygonMesh, FaceIndexMap, VertexPointMap> Context;
 
 public:
   Quad_clusterer(const PolygonMesh& pm, Canonical_faces<OriginalFaceIndexMap> faces, VertexPointMap vpm,
@@ -307,27 +289,15 @@ public:
     score_initial_clustering();
   }
 
-  // 2. The last beam of binary merges down to K.
-  void merge_to_tile_count(Clustering_result& result) { add_hierarchical_candidates(result); }
+  // 2. The last beam of binary merges down to K (Merge_generators).
+  void merge_to_tile_count(Clustering_result& result) { run_generators(Merge_generators(), result); }
 
-  // 3. The k-means, quad-strip and grid-segment candidates asked for, and
-  // the sweeps, made first but pooled last: when one ends the search
-  // (Clustering_settings::sweep_ends_search), the others would never be
-  // optimized, and are not made (100k-quad roof: clustering 44.1 -> 2.4 s,
-  // results.md stop 30).
-  void add_other_candidates(Clustering_result& result)
-  {
-    // Triangles only as fans around poles (pole_fans.h).
-    const std::vector<std::vector<std::size_t> > sweeps =
-      m_settings.use_segments ? sweep_clusterings(m_pm, m_fim, m_vpm, m_k, m_settings.policy)
-                              : std::vector<std::vector<std::size_t> >();
-    const bool sweep_ends_search =
-      m_settings.sweep_ends_search && std::any_of(sweeps.begin(), sweeps.end(), m_settings.sweep_ends_search);
-    if(!sweep_ends_search)
-      add_kmeans_strip_and_segment_candidates(result);
-    for(const std::vector<std::size_t>& label : sweeps)
-      add_best_match_candidate(result, label, Clustering_candidate::GRID_SWEEPS);
-  }
+  // 3. The other candidates (Other_generators). The sweeps, solved first
+  // from their exact start, are made first and pooled last: when one ends
+  // the search (Clustering_settings::sweep_ends_search), the other
+  // candidates would never be optimized, and are not made (a 100k-quad roof
+  // clusters in 2.4 s instead of 44.1 s).
+  void add_other_candidates(Clustering_result& result) { run_generators(Other_generators(), result); }
 
   // 4. The candidate of lowest score, its S-quads and orientations.
   Cluster_shapes select(Clustering_result& result) const
@@ -337,34 +307,44 @@ public:
   }
 
 private:
-  void add_kmeans_strip_and_segment_candidates(Clustering_result& result)
+  // Runs the generators of the list in its order on one context. A
+  // generator's candidates are pooled as it returns them, except those
+  // solved first from their exact start (origin_traits()), which are pooled
+  // after all the others; when one of its candidates with an exact start
+  // ends the search, the generators after it are not run.
+  template <typename... Generators>
+  void run_generators(Generator_list<Generators...>, Clustering_result& result)
   {
-    if(m_settings.use_kmeans && m_k > 1)
-      add_kmeans_candidate(result);
-    if(m_settings.use_strips && m_k > 1)
-      for(const std::vector<std::size_t>& label :
-          strip_clusterings(m_pm, m_fim, m_vpm, m_quads, m_descriptors, m_k, m_settings.policy, m_random,
-                            candidate_strips(m_pm, m_fim, m_vpm)))
-        add_best_match_candidate(result, label, Clustering_candidate::QUAD_STRIPS);
-    // A quad grid has no triangle.
-    if(m_settings.use_segments && m_k > 1 && !m_triangles)
-    {
-      for(const std::vector<std::size_t>& label :
-          segment_clusterings(m_pm, m_fim, m_vpm, m_k, m_settings.policy))
-        add_best_match_candidate(result, label, Clustering_candidate::GRID_SEGMENTS);
-      // About 1 ms per face at K = 100 (10,000 faces: 11 s on 2 cores,
-      // results.md stop 35); above large_mesh_faces the sweeps serve grids.
-      if(m_n <= large_mesh_faces)
-        for(const std::vector<std::size_t>& label :
-            split_segment_clusterings(m_pm, m_fim, m_vpm, m_quads, m_descriptors, m_k, m_settings.policy,
-                                      m_settings.seed, split_segment_candidates))
-          add_best_match_candidate(result, label, Clustering_candidate::GRID_SEGMENTS);
-    }
+    const Context context = generator_context();
+    std::vector<Generated_candidate> pooled_last;
+    static_cast<void>((true && ... && run_generator(Generators(), context, result, pooled_last)));
+    for(const Generated_candidate& candidate : pooled_last)
+      pool(result, candidate);
   }
 
-  // How many segment clusterings of fewer molds, split to K, join the pool:
-  // those of least length deviation (split_segment_clusterings()).
-  static constexpr std::size_t split_segment_candidates = 4;
+  // Runs `generator`; whether the generators after it are to run.
+  template <typename Generator>
+  bool run_generator(const Generator& generator, const Context& context, Clustering_result& result,
+                     std::vector<Generated_candidate>& pooled_last)
+  {
+    bool ends_search = false;
+    for(Generated_candidate& candidate : generator(context))
+    {
+      ends_search = ends_search || (candidate.has_exact_start && m_settings.sweep_ends_search &&
+                                    m_settings.sweep_ends_search(candidate.label));
+      if(origin_traits(candidate.origin).solved_first_from_start)
+        pooled_last.push_back(std::move(candidate));
+      else
+        pool(result, candidate);
+    }
+    return !ends_search;
+  }
+
+  Context generator_context()
+  {
+    return Context{{}, m_pm, m_fim, m_vpm, m_quads, m_descriptors, m_k, m_settings.policy, m_settings.seed,
+                   m_random, m_settings, m_triangles, m_exact, m_affinity, m_init, m_initial_graph.get(), m_score};
+  }
 
   void compute_affinity()
   {
@@ -384,12 +364,12 @@ private:
     const Descriptor_index index(m_descriptors);
     const Orientation_policy policy = m_settings.policy;
     double tau = m_settings.relative_threshold * m_length;
-    const std::size_t max_initial = m_exact ? m_n : (std::max)(std::size_t(1000), 4 * m_k);
+    const std::size_t max_initial = m_exact ? m_n : (std::max)(tuning::descriptor_path_initial_clusters, 4 * m_k);
     while(!leader_clustering(m_quads, m_descriptors, index, tau, policy, max_initial, m_init))
-      tau = tau > 0 ? 2 * tau : 1e-3 * m_length;
+      tau = tau > 0 ? 2 * tau : tuning::restart_threshold * m_length;
     // Too few clusters: a finer threshold first (symmetric meshes have groups of
     // congruent quads that no threshold separates; splits handle those).
-    while(m_init.leaders.size() < m_k && tau > 1e-9 * m_length)
+    while(m_init.leaders.size() < m_k && tau > tuning::smallest_threshold * m_length)
     {
       tau /= 4;
       leader_clustering(m_quads, m_descriptors, index, tau, policy, m_n, m_init);
@@ -431,84 +411,31 @@ private:
     return w;
   }
 
-  void add_hierarchical_candidates(Clustering_result& result)
+  // Measures `candidate` (unless its generator did) and pools it: its
+  // weight in the units of the path, its DOF and length deviation with its
+  // orientations, or each face's best match when it has none.
+  void pool(Clustering_result& result, const Generated_candidate& candidate)
   {
-    const std::size_t big_n = m_init.leaders.size();
-    std::vector<std::size_t> faces_per_cluster(big_n, 0);
-    for(std::size_t c : m_init.cluster) ++faces_per_cluster[c];
-    std::vector<Panel> leaders(big_n);
-    for(std::size_t c = 0; c < big_n; ++c) leaders[c] = m_quads[m_init.leaders[c]];
-    auto collect = [&](const auto& beam_search) {
-      for(const auto& s :
-          beam_search.run(beam_search.initial_state(*m_initial_graph, faces_per_cluster), m_k))
-      {
-        std::vector<std::size_t> group_of(big_n);
-        for(std::size_t g = 0; g < s.members.size(); ++g)
-          for(std::size_t c : s.members[g]) group_of[c] = g;
-        std::vector<std::size_t> label(m_n);
-        for(std::size_t f = 0; f < m_n; ++f) label[f] = group_of[m_init.cluster[f]];
-        relabel_by_first_face(label);
-        add_candidate(result, label, Clustering_candidate::HIERARCHICAL, s.weight, s.graph);
-      }
-    };
-    if(m_exact)
-      collect(Beam_search<PolygonMesh, Exact_merge_costs>(
-        Exact_merge_costs(m_affinity, m_init.cluster, big_n), leaders, m_settings.policy, m_score,
-        m_settings.width, m_settings.auto_merge));
-    else
-      collect(Beam_search<PolygonMesh, Descriptor_merge_costs>(
-        Descriptor_merge_costs(m_descriptors, m_init.cluster, big_n), leaders, m_settings.policy, m_score,
-        m_settings.width, m_settings.auto_merge));
-  }
-
-  // The k-means configuration, oriented on the face nearest to each centre.
-  void add_kmeans_candidate(Clustering_result& result)
-  {
-    std::vector<std::size_t> all(m_n);
-    for(std::size_t f = 0; f < m_n; ++f) all[f] = f;
-    std::vector<std::size_t> label = kmeans(m_descriptors, all, m_k, m_random);
-    if(label.empty())
-      return;
-    relabel_by_first_face(label);
-    if(m_triangles)
-      bring_to(m_k, m_pm, m_fim, m_vpm, m_quads, m_descriptors, m_settings.policy, m_random, label,
-               separate_kinds(m_quads, label));
-    const Descriptor_merge_costs stats(m_descriptors, label, m_k);
-    std::vector<std::size_t> representative(m_k, no_index());
-    std::vector<double> best(m_k, 0.0);
-    for(std::size_t f = 0; f < m_n; ++f)
+    if(candidate.measured)
     {
-      Quad_descriptor centre = stats.initial_group(label[f]).mean;
-      const double d = squared_distance(m_descriptors[f], centre);
-      if(representative[label[f]] == no_index() || d < best[label[f]])
-      {
-        representative[label[f]] = f;
-        best[label[f]] = d;
-      }
+      add_candidate(result, candidate.label, candidate.origin, candidate.weight,
+                    candidate.degree_of_flexibility, candidate.length_deviation);
+      return;
     }
-    std::vector<Quad_orientation> orientation(m_n);
-    parallel_for(m_n, [&](std::size_t f) {
-      orientation[f] =
-        fast_best_match(m_quads[representative[label[f]]], m_quads[f], m_settings.policy).orientation;
-    });
-    add_candidate(result, label, Clustering_candidate::KMEANS, labelling_weight(label, m_k),
-                  edge_sharing_graph(m_pm, m_fim, m_vpm, label, orientation, m_k));
-  }
-
-  // A clustering that follows the quad strips or the segments of a quad
-  // grid, each face oriented by its best match.
-  void add_best_match_candidate(Clustering_result& result, const std::vector<std::size_t>& label,
-                                Clustering_candidate::Origin origin)
-  {
-    const Cluster_shapes shapes = cluster_shapes(m_quads, label, m_k, m_settings.policy);
+    Cluster_shapes shapes;
+    if(candidate.orientation.empty())
+      shapes = cluster_shapes(m_quads, candidate.label, m_k, m_settings.policy);
+    const std::vector<Quad_orientation>& orientation =
+      candidate.orientation.empty() ? shapes.orientation : candidate.orientation;
     const Edge_sharing_graph<PolygonMesh> graph =
-      edge_sharing_graph(m_pm, m_fim, m_vpm, label, shapes.orientation, m_k);
-    add_candidate(result, label, origin, labelling_weight(label, m_k), graph);
+      edge_sharing_graph(m_pm, m_fim, m_vpm, candidate.label, orientation, m_k);
+    add_candidate(result, candidate.label, candidate.origin, labelling_weight(candidate.label, m_k),
+                  graph.degree_of_flexibility(), graph.length_deviation());
   }
 
   void add_candidate(Clustering_result& result, const std::vector<std::size_t>& label,
-                     Clustering_candidate::Origin origin, double weight,
-                     const Edge_sharing_graph<PolygonMesh>& graph)
+                     Clustering_candidate::Origin origin, double weight, std::size_t degree_of_flexibility,
+                     double length_deviation)
   {
     Clustering_candidate cand;
     cand.origin = origin;
@@ -516,30 +443,31 @@ private:
     relabel_by_first_face(numbered);
     cand.face_cluster = by_original_index(numbered, m_faces.rank);
     cand.weight = weight;
-    cand.degree_of_flexibility = graph.degree_of_flexibility();
-    cand.length_deviation = graph.length_deviation();
+    cand.degree_of_flexibility = degree_of_flexibility;
+    cand.length_deviation = length_deviation;
     cand.score = m_score(cand.weight, cand.degree_of_flexibility, cand.length_deviation);
     result.candidates.push_back(cand);
   }
 
-  // The lowest score wins (the first on a tie).
+  // The lowest score among the candidates selectable by score wins (the
+  // first on a tie); the reason states the score's three terms
+  // (Configuration_score).
   void choose(Clustering_result& result) const
   {
     for(std::size_t i = 1; i < result.candidates.size(); ++i)
-      if(result.candidates[i].origin != Clustering_candidate::GRID_SWEEPS &&
+      if(origin_traits(result.candidates[i].origin).selectable_by_score &&
          result.candidates[i].score < result.candidates[result.chosen_candidate].score)
         result.chosen_candidate = i;
     const Clustering_candidate& chosen = result.candidates[result.chosen_candidate];
     const std::size_t d0 = m_score.initial_dof;
     result.choice_reason =
-      std::string(chosen.origin == Clustering_candidate::KMEANS ? "k-means"
-                  : chosen.origin == Clustering_candidate::QUAD_STRIPS ? "quad-strip"
-                  : chosen.origin == Clustering_candidate::GRID_SEGMENTS ? "grid-segment" : "hierarchical") +
-      " configuration with the lowest score " + std::to_string(chosen.score) + " = weight " +
-      std::to_string(chosen.weight) + " / " + std::to_string(m_score.single_cluster_weight) + " + " +
-      std::to_string(m_settings.lambda) + " x (" + std::to_string(d0) + " - DOF " +
-      std::to_string(chosen.degree_of_flexibility) + ") / " + std::to_string(d0) + ", among " +
-      std::to_string(result.candidates.size()) + " candidates";
+      std::string(origin_traits(chosen.origin).name) + " configuration with the lowest score " +
+      std::to_string(chosen.score) + " = weight " + std::to_string(chosen.weight) + " / " +
+      std::to_string(m_score.single_cluster_weight) + " + " + std::to_string(m_settings.lambda) + " x (" +
+      std::to_string(d0) + " - DOF " + std::to_string(chosen.degree_of_flexibility) + ") / " +
+      std::to_string(d0) + " + " + std::to_string(m_settings.mu) + " x length deviation " +
+      std::to_string(chosen.length_deviation) + " / " + std::to_string(m_score.total_length_deviation) +
+      ", among " + std::to_string(result.candidates.size()) + " candidates";
   }
 
   // S-quads, orientations, weights and DOF of the chosen configuration.
@@ -644,21 +572,32 @@ Clustering_result cluster_quads(Validated_mesh, const PolygonMesh& pm, const Nam
 ///    `use_auto_merge`, every pair of clusters whose S-quad edges lie in the
 ///    same 4 components of the edge-sharing graph, which keeps the degree of
 ///    flexibility). Each proposal gets the score
-///    <center>score = W / W1 + flexibility_penalty x (D0 - D) / D0</center>
+///    <center>score = W / W1 + flexibility_penalty x (D0 - D) / D0
+///    + structure_penalty x V / V1</center>
 ///    with W the configuration's weight, W1 the weight of the single-cluster
-///    configuration, D its degree of flexibility (a copy of the parent's
-///    `Edge_sharing_graph` amended by `merge_clusters()`) and D0 that of the
-///    threshold clustering. The `number_of_candidates` best distinct proposals
-///    form the beam of the next K.
-/// -# <i>Final choice</i>: the pool is the last beam plus, with
+///    configuration (one cluster per panel kind on a mesh with triangles), D
+///    its degree of flexibility (a copy of the parent's `Edge_sharing_graph`
+///    amended by `merge_clusters()`), D0 that of the threshold clustering
+///    (at least 1 in the division), V its length deviation
+///    (`Edge_sharing_graph::length_deviation()`: the spread of the input's
+///    edge lengths within the components of the edge-sharing graph) and V1
+///    the spread of all the mesh's edge lengths. The `number_of_candidates`
+///    best distinct proposals form the beam of the next K.
+/// -# <i>Final choice</i>: the pool is the last beam plus the candidates of
+///    the other generators (user manual, section Candidate generators): with
 ///    `use_kmeans_candidate`, a k-means configuration (k-means++ seeded by
 ///    `random_seed`, on the 7 descriptor components), with
 ///    `use_strip_candidates` the quad-strip clusterings, and with
 ///    `use_segment_candidates`, on a mesh whose quads form a grid, the
 ///    segment clusterings (runs of rows, each a segment of column molds or a
-///    band of one mold, chosen by dynamic programming; see the user manual);
-///    the configuration with the lowest score is returned (on a tie, the
-///    first in the pool).
+///    band of one mold, chosen by dynamic programming; see the user manual)
+///    and, last, the sweep clusterings. Every candidate gets the score above,
+///    its D and V measured with each face oriented by its best match (the
+///    k-means one: on its cluster's face nearest to the mean descriptor; the
+///    beam's: as the beam tracked them). The candidate with the lowest score
+///    among those selectable by score (all but the sweeps) is returned (on a
+///    tie, the first in the pool); `Clustering_result::choice_reason` states
+///    its three terms.
 /// -# <i>S-quads and orientations</i>: each cluster's S-quad is the Procrustes
 ///    mean of its instances. Each face is tagged with an <i>admissible</i>
 ///    orientation: a near-tie, whose dissimilarity to its S-quad exceeds the
@@ -703,6 +642,8 @@ Clustering_result cluster_quads(Validated_mesh, const PolygonMesh& pm, const Nam
 ///   \cgalParamNBegin{flexibility_penalty} weight lambda of the lost degrees of
 ///     flexibility in the score; default 0.5. 0 reproduces the paper's pure weight
 ///     criterion. \cgalParamNEnd
+///   \cgalParamNBegin{structure_penalty} weight mu of the length deviation in the
+///     score; default 1. \cgalParamNEnd
 ///   \cgalParamNBegin{use_kmeans_candidate} default `true`. \cgalParamNEnd
 ///   \cgalParamNBegin{use_auto_merge} default `true`. \cgalParamNEnd
 ///   \cgalParamNBegin{use_strip_candidates} default `true`. \cgalParamNEnd

@@ -17,6 +17,7 @@
 // neighbours in the order of its edges, from halfedge(f). A mesh with several
 // components restarts the same way on the faces not reached yet.
 
+#include <CGAL/Tilable_surfaces/internal/tuning.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 #include <CGAL/Tilable_surfaces/internal/Face_clustering.h>
 
@@ -62,7 +63,7 @@ std::vector<std::size_t> canonical_face_ranks(const PolygonMesh& pm, FaceIndexMa
     distance[i] = (centroid[i] - middle).squaredNorm();
     area[i] = quads[i].doubled_vector_area().norm();
   }
-  auto near = [](double a, double b) { return std::abs(a - b) <= 1e-9 * (std::max)(a, b); };
+  auto near = [](double a, double b) { return std::abs(a - b) <= tuning::canonical_start_tie * (std::max)(a, b); };
   // Start candidates, farthest first: a start is the first unranked one after
   // its near ties are resolved by area.
   std::vector<std::size_t> by_distance(n);

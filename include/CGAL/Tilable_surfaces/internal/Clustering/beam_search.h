@@ -37,9 +37,13 @@
 // by increasing cost, so the rest of them is skipped too.
 // The beam is the same as without this pruning.
 
+#include <CGAL/Tilable_surfaces/internal/tuning.h>
 #include <CGAL/Tilable_surfaces/Edge_sharing_graph.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/fast_match.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/initial_clustering.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/link_count.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/merge_costs.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/strip_candidates.h>
 #include <CGAL/Tilable_surfaces/internal/parallel_for.h>
 
 #include <algorithm>
@@ -47,6 +51,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <limits>
+#include <type_traits>
 #include <unordered_map>
 #include <unordered_set>
 #include <utility>
@@ -235,7 +240,7 @@ private:
   static std::size_t no_group() { return std::size_t(-1); }
 
   // Up to this many groups, every pair is proposed (see the file comment).
-  static std::size_t exhaustive_limit() { return 128; }
+  static std::size_t exhaustive_limit() { return tuning::beam_exhaustive_groups; }
 
   // Groups of quads and of triangles never merge: their cost is infinite,
   // which no bound admits.
@@ -465,6 +470,56 @@ private:
   std::size_t m_width;
   bool m_auto_merge;
   mutable std::unordered_map<std::uint64_t, Quad_orientation> m_correspondences;
+};
+
+// The candidate generator of the last beam (CandidateGenerator, origin
+// HIERARCHICAL): the `settings.width` best configurations of K groups of the
+// threshold clustering, best score first, each with the weight and the
+// edge-sharing graph the beam kept for it.
+struct Hierarchical_generator
+{
+  template <typename Context>
+  std::vector<typename Context::Candidate> operator()(const Context& context) const
+  {
+    typedef typename std::remove_cv<typename std::remove_reference<decltype(context.mesh)>::type>::type
+      PolygonMesh;
+    const Initial_clustering& init = context.initial;
+    const std::size_t big_n = init.leaders.size(), n = init.cluster.size();
+    std::vector<std::size_t> faces_per_cluster(big_n, 0);
+    for(std::size_t c : init.cluster) ++faces_per_cluster[c];
+    std::vector<Panel> leaders(big_n);
+    for(std::size_t c = 0; c < big_n; ++c) leaders[c] = context.panels[init.leaders[c]];
+    std::vector<typename Context::Candidate> result;
+    auto collect = [&](const auto& beam_search) {
+      for(const auto& s : beam_search.run(beam_search.initial_state(*context.initial_graph, faces_per_cluster),
+                                          context.k))
+      {
+        std::vector<std::size_t> group_of(big_n);
+        for(std::size_t g = 0; g < s.members.size(); ++g)
+          for(std::size_t c : s.members[g]) group_of[c] = g;
+        typename Context::Candidate candidate;
+        candidate.origin = Context::HIERARCHICAL;
+        candidate.label.resize(n);
+        for(std::size_t f = 0; f < n; ++f) candidate.label[f] = group_of[init.cluster[f]];
+        relabel_by_first_face(candidate.label);
+        candidate.measured = true;
+        candidate.weight = s.weight;
+        candidate.degree_of_flexibility = s.graph.degree_of_flexibility();
+        candidate.length_deviation = s.graph.length_deviation();
+        result.push_back(std::move(candidate));
+      }
+    };
+    const auto& settings = context.settings;
+    if(context.exact)
+      collect(Beam_search<PolygonMesh, Exact_merge_costs>(
+        Exact_merge_costs(context.affinity, init.cluster, big_n), leaders, context.policy, context.score,
+        settings.width, settings.auto_merge));
+    else
+      collect(Beam_search<PolygonMesh, Descriptor_merge_costs>(
+        Descriptor_merge_costs(context.descriptors, init.cluster, big_n), leaders, context.policy,
+        context.score, settings.width, settings.auto_merge));
+    return result;
+  }
 };
 
 } // namespace internal

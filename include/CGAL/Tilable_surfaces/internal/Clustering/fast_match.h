@@ -21,6 +21,7 @@
 //   differences of the corners' distances to their centroids bounds the sum of
 //   the corner distances from below.
 
+#include <CGAL/Tilable_surfaces/internal/tuning.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 
 #include <Eigen/Eigenvalues>
@@ -88,7 +89,7 @@ inline Eigen::Matrix3d optimal_rotation(const Eigen::Matrix3d& s, double upper_b
   // decreases monotonically to it.
   const double c2 = -2 * s.squaredNorm(), c1 = -8 * s.determinant(), c0 = n.determinant();
   double lambda = upper_bound;
-  for(int it = 0; it < 60; ++it)
+  for(int it = 0; it < tuning::quaternion_newton_iterations; ++it)
   {
     const double l2 = lambda * lambda;
     const double p = (l2 + c2) * l2 + c1 * lambda + c0;
@@ -97,7 +98,7 @@ inline Eigen::Matrix3d optimal_rotation(const Eigen::Matrix3d& s, double upper_b
       break;
     const double step = p / dp;
     lambda -= step;
-    if(!(std::abs(step) > 1e-15 * upper_bound))
+    if(!(std::abs(step) > tuning::quaternion_newton_step * upper_bound))
       break;
   }
 
@@ -111,7 +112,7 @@ inline Eigen::Matrix3d optimal_rotation(const Eigen::Matrix3d& s, double upper_b
   // |adj(N - lambda I)| is the product of the gaps to the other eigenvalues:
   // a small one means a (nearly) repeated eigenvalue.
   const double scale = upper_bound * upper_bound * upper_bound;
-  if(!(q.norm() > 1e-4 * scale))
+  if(!(q.norm() > tuning::repeated_eigenvalue_gap * scale))
   {
     if(!(upper_bound > 0))
       return Eigen::Matrix3d::Identity();
@@ -204,7 +205,7 @@ inline Quad_match fast_best_match(const Prepared_quad& p, const Prepared_quad& q
   for(int rank = 0; rank < m; ++rank)
   {
     // The slack keeps correspondences whose bound ties the best up to rounding.
-    if(order[rank].first > best.dissimilarity * (1 + 1e-12))
+    if(order[rank].first > best.dissimilarity * (1 + tuning::match_bound_slack))
       break;
     const Quad_orientation orientation(order[rank].second);
     const std::pair<double, Rigid_fit> match =

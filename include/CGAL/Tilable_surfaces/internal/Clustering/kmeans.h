@@ -8,6 +8,7 @@
 // enriches the candidate pool; also the first step of splitting a cluster).
 // Seeding is k-means++ with a `CGAL::Random`, so results follow the seed.
 
+#include <CGAL/Tilable_surfaces/internal/tuning.h>
 #include <CGAL/Tilable_surfaces/internal/parallel_for.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 
@@ -33,7 +34,7 @@ inline double squared_distance(const Quad_descriptor& a, const Quad_descriptor& 
 inline std::vector<std::size_t> kmeans(const std::vector<Quad_descriptor>& points,
                                        const std::vector<std::size_t>& subset,
                                        std::size_t k, CGAL::Random& random,
-                                       int iterations = 30)
+                                       int iterations = tuning::kmeans_iterations)
 {
   const std::size_t m = subset.size();
   if(k == 0 || k > m)

@@ -14,6 +14,7 @@
 // the fan is one S-triangle. So such a mesh sweeps as its quads do, with one
 // more mold per fan.
 
+#include <CGAL/Tilable_surfaces/internal/tuning.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/strip_candidates.h>
 #include <CGAL/Tilable_surfaces/internal/Tilable_problem.h>
 
@@ -52,6 +53,93 @@ struct Pole_fans
 // What the triangles of a mesh are.
 enum class Triangle_layout { NONE, POLE_FANS, OTHER };
 
+// Whether `v` is a pole: an interior vertex all of whose faces are triangles.
+template <typename PolygonMesh>
+bool is_pole(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v, const PolygonMesh& pm)
+{
+  typedef typename boost::graph_traits<PolygonMesh>::face_descriptor face_descriptor;
+  if(is_border(v, pm))
+    return false;
+  for(face_descriptor f : faces_around_target(halfedge(v, pm), pm))
+    if(degree(f, pm) != 3)
+      return false;
+  return true;
+}
+
+// Adds the quad `f` of face index `i` to the quad part of `fans`, with its
+// vertices not yet there (`sub_vertex`: the quad part's vertex of every
+// vertex index, or no_index()). False when the quad part refuses the face.
+template <typename PolygonMesh, typename VertexIndexMap, typename VertexPointMap>
+bool add_quad_to_quad_part(typename boost::graph_traits<PolygonMesh>::face_descriptor f, std::size_t i,
+                           const PolygonMesh& pm, VertexIndexMap vim, VertexPointMap vpm, Pole_fans& fans,
+                           std::vector<std::size_t>& sub_vertex)
+{
+  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
+  std::vector<Pole_fans::Quad_part::Vertex_index> corners;
+  std::array<std::size_t, 4> quad;
+  auto h = halfedge(f, pm);
+  for(int j = 0; j < 4; ++j, h = next(h, pm))
+  {
+    const vertex_descriptor v = target(h, pm);
+    const std::size_t index = std::size_t(get(vim, v));
+    quad[std::size_t(j)] = index;
+    if(sub_vertex[index] == no_index())
+    {
+      sub_vertex[index] = fans.vertex_of.size();
+      fans.vertex_of.push_back(index);
+      const Eigen::Vector3d p = to_eigen(get(vpm, v));
+      fans.quads.add_vertex(Pole_fans::Quad_part::Point(p.x(), p.y(), p.z()));
+    }
+    corners.push_back(Pole_fans::Quad_part::Vertex_index(std::uint32_t(sub_vertex[index])));
+  }
+  // Same vertex order as the face (its first halfedge may differ:
+  // sweep_start() maps orientations through quad_corners).
+  if(fans.quads.add_face(corners) == Pole_fans::Quad_part::null_face())
+    return false;
+  fans.face_of.push_back(i);
+  fans.quad_corners.push_back(quad);
+  return true;
+}
+
+// Adds the triangle `f` of face index `i` to the fan of its pole, a new fan
+// for a new pole (`fan_of_pole`: the fan of every vertex index, or
+// no_index()). False when the triangle has no pole or two.
+template <typename PolygonMesh, typename VertexIndexMap>
+bool add_triangle_to_fan(typename boost::graph_traits<PolygonMesh>::face_descriptor f, std::size_t i,
+                         const PolygonMesh& pm, VertexIndexMap vim, Pole_fans& fans,
+                         std::vector<std::size_t>& fan_of_pole)
+{
+  int pole_corner = -1, poles = 0;
+  auto h = halfedge(f, pm);
+  for(int j = 0; j < 3; ++j, h = next(h, pm))
+    if(is_pole(target(h, pm), pm))
+    {
+      pole_corner = j;
+      ++poles;
+    }
+  if(poles != 1)
+    return false;
+  auto p = halfedge(f, pm);
+  for(int j = 0; j < pole_corner; ++j)
+    p = next(p, pm);
+  std::array<std::size_t, 3> triangle;
+  for(int j = 0; j < 3; ++j, p = next(p, pm))
+    triangle[std::size_t(j)] = std::size_t(get(vim, target(p, pm)));
+  std::size_t& fan = fan_of_pole[triangle[0]];
+  if(fan == no_index())
+  {
+    fan = fans.pole.size();
+    fans.pole.push_back(triangle[0]);
+    fans.triangles.emplace_back();
+    fans.pole_corner.emplace_back();
+    fans.corners.emplace_back();
+  }
+  fans.triangles[fan].push_back(i);
+  fans.pole_corner[fan].push_back(pole_corner);
+  fans.corners[fan].push_back(triangle);
+  return true;
+}
+
 // Whether `pm` has no triangle, or has quads and triangles all in pole fans
 // (filled in `fans`), or something else: a face of another size, a triangle
 // with no pole or two, no quad. A pole is an interior vertex all of whose
@@ -62,7 +150,6 @@ Triangle_layout pole_fans(const PolygonMesh& pm, FaceIndexMap fim, VertexIndexMa
 {
   typedef typename boost::graph_traits<PolygonMesh>::face_descriptor face_descriptor;
   typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
-  typedef typename boost::graph_traits<PolygonMesh>::halfedge_descriptor halfedge_descriptor;
   fans = Pole_fans();
   std::vector<face_descriptor> face_by_index(num_faces(pm));
   bool triangles = false;
@@ -76,14 +163,6 @@ Triangle_layout pole_fans(const PolygonMesh& pm, FaceIndexMap fim, VertexIndexMa
   }
   if(!triangles)
     return Triangle_layout::NONE;
-  auto is_pole = [&](vertex_descriptor v) {
-    if(is_border(v, pm))
-      return false;
-    for(face_descriptor f : faces_around_target(halfedge(v, pm), pm))
-      if(degree(f, pm) != 3)
-        return false;
-    return true;
-  };
   // Vertex indices need not be dense (a Surface_mesh with removed elements).
   std::size_t vertex_slots = 0;
   for(vertex_descriptor v : vertices(pm))
@@ -92,63 +171,10 @@ Triangle_layout pole_fans(const PolygonMesh& pm, FaceIndexMap fim, VertexIndexMa
   for(std::size_t i = 0; i < face_by_index.size(); ++i)
   {
     const face_descriptor f = face_by_index[i];
-    std::vector<Pole_fans::Quad_part::Vertex_index> corners;
-    std::array<std::size_t, 4> quad;
-    int pole_corner = -1, poles = 0;
-    halfedge_descriptor h = halfedge(f, pm);
-    for(int j = 0; j < int(degree(f, pm)); ++j, h = next(h, pm))
-    {
-      const vertex_descriptor v = target(h, pm);
-      const std::size_t index = std::size_t(get(vim, v));
-      if(degree(f, pm) == 3)
-      {
-        if(is_pole(v))
-        {
-          pole_corner = j;
-          ++poles;
-        }
-        continue;
-      }
-      quad[std::size_t(j)] = index;
-      if(sub_vertex[index] == no_index())
-      {
-        sub_vertex[index] = fans.vertex_of.size();
-        fans.vertex_of.push_back(index);
-        const Eigen::Vector3d p = to_eigen(get(vpm, v));
-        fans.quads.add_vertex(Pole_fans::Quad_part::Point(p.x(), p.y(), p.z()));
-      }
-      corners.push_back(Pole_fans::Quad_part::Vertex_index(std::uint32_t(sub_vertex[index])));
-    }
-    if(degree(f, pm) == 4)
-    {
-      // Same vertex order as the face (its first halfedge may differ:
-      // sweep_start() maps orientations through quad_corners).
-      if(fans.quads.add_face(corners) == Pole_fans::Quad_part::null_face())
-        return Triangle_layout::OTHER;
-      fans.face_of.push_back(i);
-      fans.quad_corners.push_back(quad);
-      continue;
-    }
-    if(poles != 1)
+    const bool added = degree(f, pm) == 4 ? add_quad_to_quad_part(f, i, pm, vim, vpm, fans, sub_vertex)
+                                          : add_triangle_to_fan(f, i, pm, vim, fans, fan_of_pole);
+    if(!added)
       return Triangle_layout::OTHER;
-    halfedge_descriptor p = halfedge(f, pm);
-    for(int j = 0; j < pole_corner; ++j)
-      p = next(p, pm);
-    std::array<std::size_t, 3> triangle;
-    for(int j = 0; j < 3; ++j, p = next(p, pm))
-      triangle[std::size_t(j)] = std::size_t(get(vim, target(p, pm)));
-    std::size_t& fan = fan_of_pole[triangle[0]];
-    if(fan == no_index())
-    {
-      fan = fans.pole.size();
-      fans.pole.push_back(triangle[0]);
-      fans.triangles.emplace_back();
-      fans.pole_corner.emplace_back();
-      fans.corners.emplace_back();
-    }
-    fans.triangles[fan].push_back(i);
-    fans.pole_corner[fan].push_back(pole_corner);
-    fans.corners[fan].push_back(triangle);
   }
   return fans.face_of.empty() ? Triangle_layout::OTHER : Triangle_layout::POLE_FANS;
 }
@@ -201,7 +227,7 @@ inline std::vector<std::size_t> quad_part_label(const Pole_fans& fans, const std
 // rim's centre, moved along the normal of its plane to the height of the
 // pole of `input`. False when the fan's triangles do not all come out
 // congruent (their edge lengths within 1e-9 of `length`, the mean edge
-// length): the rim was not such a polygon.
+// length): the rim is not such a polygon.
 inline bool put_poles_on_axes(const Pole_fans& fans, Point_matrix& points, const Point_matrix& input, double length)
 {
   auto point = [&](std::size_t v) { return Eigen::Vector3d(points.row(Eigen::Index(v)).transpose()); };
@@ -224,7 +250,7 @@ inline bool put_poles_on_axes(const Pole_fans& fans, Point_matrix& points, const
     };
     const Eigen::Vector3d first = edges(triangles.front());
     for(const std::array<std::size_t, 3>& t : triangles)
-      if((edges(t) - first).cwiseAbs().maxCoeff() > 1e-9 * length)
+      if((edges(t) - first).cwiseAbs().maxCoeff() > tuning::pole_fan_congruence * length)
         return false;
   }
   return true;

@@ -9,6 +9,7 @@
 // reference by its best match (orientation and rigid fit), the aligned copies
 // are averaged, and the mean becomes the next reference.
 
+#include <CGAL/Tilable_surfaces/internal/tuning.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/fast_match.h>
 #include <CGAL/Tilable_surfaces/internal/parallel_for.h>
 
@@ -63,7 +64,7 @@ inline Panel procrustes_mean(const std::vector<Panel>& quads,
                             const std::vector<std::size_t>& members,
                             Orientation_policy policy,
                             const std::vector<Quad_orientation>* orientations = nullptr,
-                            int max_passes = 3, double tolerance = 0)
+                            int max_passes = tuning::procrustes_passes, double tolerance = 0)
 {
   const std::size_t m = members.size();
   Panel reference = centred(orientations ? reoriented(quads[members[0]], (*orientations)[0])
@@ -106,7 +107,8 @@ inline Panel converged_procrustes_mean(const std::vector<Panel>& instances, bool
   for(std::size_t i = 0; i < members.size(); ++i) members[i] = i;
   const std::vector<Quad_orientation> as_labelled(instances.size());
   return procrustes_mean(instances, members, allow_mirror ? ALLOW_MIRRORED_PANELS : PROPER_RIGID_MOTIONS,
-                         &as_labelled, 10, 1e-14);
+                         &as_labelled, tuning::converged_procrustes_passes,
+                         tuning::converged_procrustes_tolerance);
 }
 
 } // namespace internal

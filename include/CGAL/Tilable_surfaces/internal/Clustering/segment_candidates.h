@@ -32,6 +32,7 @@
 
 #include <CGAL/Tilable_surfaces/internal/Clustering/fast_match.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/strip_candidates.h>
+#include <CGAL/Tilable_surfaces/internal/tuning.h>
 
 #include <CGAL/boost/graph/helpers.h>
 
@@ -458,7 +459,7 @@ segment_options(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, std
     const Quad_grid& grid = s->grid;
     // The dynamic program takes about 4 rows^2 K steps.
     if(grid.rows == 0 || grid.rows > max_rows || grid.columns > max_columns ||
-       double(grid.rows) * double(grid.rows) * double(k) > 1e8)
+       double(grid.rows) * double(grid.rows) * double(k) > tuning::segment_runs_work)
       continue;
     std::vector<Run_option>& options = s->options;
     options.reserve(4); // at most 4: the sets' pointers stay valid
@@ -493,7 +494,8 @@ segment_options(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, std
 template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
 std::vector<std::vector<std::size_t> >
 segment_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, std::size_t k,
-                    Orientation_policy policy, std::size_t max_rows = 400, std::size_t max_columns = 400)
+                    Orientation_policy policy, std::size_t max_rows = tuning::segment_grid_max_rows,
+                    std::size_t max_columns = tuning::segment_grid_max_columns)
 {
   std::vector<std::vector<std::size_t> > result;
   for(const std::unique_ptr<Segment_options>& s : segment_options(pm, fim, vpm, k, policy, max_rows, max_columns))
@@ -513,7 +515,7 @@ segment_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
 // structure, where the best runs with exactly k molds may change it
 // (seashell stand-in, K = 96: those that end exact and uncrossed end at
 // 4.8% of the diagonal or farther, the one of 80 molds split to 96 at
-// 1.6%, results.md stop 35); the length
+// 1.6%); the length
 // deviation tells the structures that fit (there, 80 and 60 molds rank
 // first by it, as by the predicted displacement). The splits of each
 // partition draw from a generator of their own, seeded by `seed`, so the
@@ -523,7 +525,8 @@ std::vector<std::vector<std::size_t> >
 split_segment_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
                           const std::vector<Panel>& quads, const std::vector<Quad_descriptor>& descriptors,
                           std::size_t k, Orientation_policy policy, unsigned int seed, std::size_t count,
-                          std::size_t max_rows = 400, std::size_t max_columns = 400)
+                          std::size_t max_rows = tuning::segment_grid_max_rows,
+                          std::size_t max_columns = tuning::segment_grid_max_columns)
 {
   std::vector<std::vector<std::size_t> > labels;
   std::vector<std::size_t> molds;
@@ -557,6 +560,60 @@ split_segment_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMa
       result.push_back(labels[order[i]]);
   return result;
 }
+
+// The candidates of clusterings by labels (the segment, split segment and
+// sweep generators): each face oriented by its best match.
+template <typename Candidate, typename Origin>
+std::vector<Candidate> best_match_candidates(std::vector<std::vector<std::size_t> > labels, Origin origin)
+{
+  std::vector<Candidate> result(labels.size());
+  for(std::size_t i = 0; i < labels.size(); ++i)
+  {
+    result[i].origin = origin;
+    result[i].label = std::move(labels[i]);
+  }
+  return result;
+}
+
+// The grid-segment candidate generator (CandidateGenerator, origin
+// GRID_SEGMENTS): with `use_segment_candidates`, K > 1 and no triangle (a
+// quad grid has none), the segment clusterings with K molds
+// (segment_clusterings()).
+struct Grid_segment_generator
+{
+  template <typename Context>
+  std::vector<typename Context::Candidate> operator()(const Context& context) const
+  {
+    if(!context.settings.use_segments || context.k <= 1 || context.has_triangles)
+      return std::vector<typename Context::Candidate>();
+    return best_match_candidates<typename Context::Candidate>(
+      segment_clusterings(context.mesh, context.face_index, context.vertex_point, context.k, context.policy),
+      Context::GRID_SEGMENTS);
+  }
+};
+
+// The split-segment candidate generator (CandidateGenerator, origin
+// GRID_SEGMENTS): as Grid_segment_generator, up to large_mesh_faces faces,
+// the `tuning::split_segment_candidates` segment clusterings of fewer molds
+// split to K of least length deviation (split_segment_clusterings(), each
+// drawing from a generator of its own seeded by `random_seed`). They cost
+// about 1 ms per face at K = 100 (10,000 faces: 11 s on 2 cores); above
+// large_mesh_faces the sweeps serve grids.
+struct Split_segment_generator
+{
+  template <typename Context>
+  std::vector<typename Context::Candidate> operator()(const Context& context) const
+  {
+    if(!context.settings.use_segments || context.k <= 1 || context.has_triangles ||
+       context.panels.size() > large_mesh_faces)
+      return std::vector<typename Context::Candidate>();
+    return best_match_candidates<typename Context::Candidate>(
+      split_segment_clusterings(context.mesh, context.face_index, context.vertex_point, context.panels,
+                                context.descriptors, context.k, context.policy, context.seed,
+                                tuning::split_segment_candidates),
+      Context::GRID_SEGMENTS);
+  }
+};
 
 } // namespace internal
 } // namespace Tilable_surfaces

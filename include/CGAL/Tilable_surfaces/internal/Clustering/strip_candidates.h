@@ -24,6 +24,7 @@
 // lengths they tie together) down to K, or, if there are fewer than K, the
 // largest clusters are split by shape until K.
 
+#include <CGAL/Tilable_surfaces/internal/tuning.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/cluster_analysis.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/initial_clustering.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/panel_kinds.h>
@@ -104,8 +105,8 @@ int face_edge_parity(typename boost::graph_traits<PolygonMesh>::halfedge_descrip
 // itself, as around a vertex of odd valence), or with triangles, all 0.
 // Face 0 is never flipped: quad_grid() and trimmed_quad_grid() walk from
 // face 0 along its own face edges, and direction d must be the same strips
-// there (a scrambled tunnel whose face 0 was in the minority, flipped by a
-// majority rule, was no grid: results.md, stop 32).
+// there (flipping face 0 by a majority rule, when it is in the minority,
+// makes a scrambled tunnel no grid).
 template <typename PolygonMesh, typename FaceIndexMap>
 std::vector<int> strip_direction_flips(const PolygonMesh& pm, FaceIndexMap fim)
 {
@@ -281,14 +282,15 @@ std::vector<std::vector<std::size_t> >
 strip_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, const std::vector<Panel>& quads,
                   const std::vector<Quad_descriptor>& descriptors, std::size_t k,
                   Orientation_policy policy, CGAL::Random& random,
-                  std::array<std::vector<std::size_t>, 2> strips, std::size_t max_strips = 400)
+                  std::array<std::vector<std::size_t>, 2> strips,
+                  std::size_t max_strips = tuning::strip_max_strips)
 {
   const bool triangles = has_triangles(quads);
   std::array<std::size_t, 2> count;
   for(int d = 0; d < 2; ++d)
     count[d] = triangles ? separate_kinds(quads, strips[d])
                          : 1 + *std::max_element(strips[d].begin(), strips[d].end());
-  const std::array<std::size_t, 8> group_counts{{1, 2, 3, 4, 6, 8, 12, 16}};
+  const std::size_t(&group_counts)[8] = tuning::strip_group_counts;
   auto pair_groups = [&](int first, std::size_t b) {
     const std::size_t a = (k + b - 1) / b;
     return std::array<std::size_t, 2>{{first == 0 ? a : b, first == 0 ? b : a}};

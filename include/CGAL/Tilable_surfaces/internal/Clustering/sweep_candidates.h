@@ -32,6 +32,7 @@
 // must be the identity: M is made a rotation by a whole number of turns
 // over the R rows (close_up()), and the swept surface is one of revolution.
 
+#include <CGAL/Tilable_surfaces/internal/tuning.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/pole_fans.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/segment_candidates.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/trimmed_grid.h>
@@ -161,10 +162,9 @@ Quad_grid full_or_trimmed_grid(const PolygonMesh& pm, FaceIndexMap fim, VertexPo
 // directions carried across the mesh (quad_strips()) when they make it a
 // grid, full or trimmed, else each face's own parities. On a grid whose
 // faces start at any corner, only the carried strips are its rows and
-// columns (the tunnel so started, K = 10: 2.07% -> 1.56% Hausdorff, as the
-// bundled file, once its face 0 sets the directions); on
-// other meshes, carried strips made free_negshell_marc_anet's result cross
-// itself (results.md, stops 31 and 32).
+// columns (the tunnel so started, K = 10: 1.56% Hausdorff with the carried
+// strips, as the bundled file, 2.07% with each face's parities); on other
+// meshes, carried strips make free_negshell_marc_anet's result cross itself.
 template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
 std::array<std::vector<std::size_t>, 2> candidate_strips(const PolygonMesh& pm, FaceIndexMap fim,
                                                          VertexPointMap vpm)
@@ -201,11 +201,6 @@ struct Swept_section
   }
 };
 
-// Below this angle (radians) the motion of a one-run sweep with column runs
-// is taken as its translation: the helices' axis would be far away and
-// ill-conditioned, and a translation commutes with the straight runs.
-constexpr double screw_angle_min = 1e-6;
-
 // The rigid motion closest to `m` whose `rows`-th power is the identity: a
 // rotation about m's axis by a whole number of turns over the rows, at
 // least one. False when m turns by less than half a row's share of a turn.
@@ -229,7 +224,7 @@ inline bool close_up(Eigen::Matrix4d& m, std::size_t rows)
 
 // `ring`: the input rings, `run_of`: the run of each row, `present`: per
 // ring, 1 or 0 per point (present_grid_rings()). With `column_runs`, a single
-// run whose motion hardly turns is made a translation (screw_angle_min).
+// run whose motion hardly turns is made a translation (tuning::screw_angle_min).
 // With `closed` (the last ring is the first), a single run whose motion is
 // made to close up (close_up()).
 inline Swept_section swept_section(const std::vector<Eigen::Matrix3Xd>& ring, const std::vector<std::size_t>& run_of,
@@ -267,7 +262,7 @@ inline Swept_section swept_section(const std::vector<Eigen::Matrix3Xd>& ring, co
     s.valid = false;
     return s;
   }
-  if(column_runs && Eigen::AngleAxisd(Eigen::Matrix3d(s.motion[0].topLeftCorner<3, 3>())).angle() < screw_angle_min)
+  if(column_runs && Eigen::AngleAxisd(Eigen::Matrix3d(s.motion[0].topLeftCorner<3, 3>())).angle() < tuning::screw_angle_min)
     s.motion[0].topLeftCorner<3, 3>().setIdentity();
   const std::size_t middle = rows / 2;
   s.frame.assign(rows + 1, Eigen::Matrix4d::Identity());
@@ -303,7 +298,7 @@ public:
   explicit Screw_coordinates(const Eigen::Matrix4d& m)
   {
     const Eigen::AngleAxisd turn(Eigen::Matrix3d(m.topLeftCorner<3, 3>()));
-    m_translation = turn.angle() < screw_angle_min;
+    m_translation = turn.angle() < tuning::screw_angle_min;
     if(m_translation)
       return;
     m_axis = turn.axis();
@@ -438,7 +433,7 @@ inline std::vector<std::size_t> screw_column_runs(const Eigen::Matrix3Xd& sectio
   const Screw_coordinates coordinates(motion);
   // Runs of at most half the ring, and O(columns^3 / 8) work at most ~1e8.
   const std::size_t longest =
-    (std::max)(std::size_t(2), (std::min)(columns / 2, std::size_t(std::sqrt(1e8 / double(columns)))));
+    (std::max)(std::size_t(2), (std::min)(columns / 2, std::size_t(std::sqrt(tuning::screw_column_runs_work / double(columns)))));
   const double infinity = (std::numeric_limits<double>::max)();
   // cost[c * (longest + 1) + l]: the run of l columns from column c; none
   // when its steps shrink to less than half their mean length (a section
@@ -456,7 +451,7 @@ inline std::vector<std::size_t> screw_column_runs(const Eigen::Matrix3Xd& sectio
         if(j > 0)
           length += (section.col(v) - section.col((v + section.cols() - 1) % section.cols())).norm();
       }
-      if((fit.col(1) - fit.col(0)).norm() >= 0.5 * length / double(l))
+      if((fit.col(1) - fit.col(0)).norm() >= tuning::screw_run_min_step * length / double(l))
         cost[c * (longest + 1) + l] = sum;
     }
   std::vector<std::size_t> cuts(1, 0);
@@ -637,7 +632,7 @@ quad_grid_sweep_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPoint
       continue;
     }
     const std::size_t runs = (std::min)(rows, k / columns), left = k - runs * columns;
-    if(double(rows) * double(rows) * double(runs) > 1e8)
+    if(double(rows) * double(rows) * double(runs) > tuning::sweep_runs_work)
       continue;
     std::vector<std::size_t> all_columns(columns);
     std::iota(all_columns.begin(), all_columns.end(), std::size_t(0));
@@ -695,6 +690,26 @@ sweep_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, s
     result.push_back(with_fan_clusters(fans, label, num_faces(pm)));
   return result;
 }
+
+// The sweep candidate generator (CandidateGenerator, origin GRID_SWEEPS):
+// with `use_segment_candidates`, the sweep clusterings (sweep_clusterings(),
+// also of meshes with triangles as fans around poles), each with an exact
+// start (sweep_start()) and its faces oriented by their best match.
+struct Sweep_generator
+{
+  template <typename Context>
+  std::vector<typename Context::Candidate> operator()(const Context& context) const
+  {
+    if(!context.settings.use_segments)
+      return std::vector<typename Context::Candidate>();
+    std::vector<typename Context::Candidate> result = best_match_candidates<typename Context::Candidate>(
+      sweep_clusterings(context.mesh, context.face_index, context.vertex_point, context.k, context.policy),
+      Context::GRID_SWEEPS);
+    for(typename Context::Candidate& candidate : result)
+      candidate.has_exact_start = true;
+    return result;
+  }
+};
 
 } // namespace internal
 } // namespace Tilable_surfaces

@@ -16,6 +16,7 @@
 // missing.
 
 #include <CGAL/Tilable_surfaces/internal/Clustering/segment_candidates.h>
+#include <CGAL/Tilable_surfaces/internal/tuning.h>
 
 #include <algorithm>
 #include <array>
@@ -42,34 +43,21 @@ struct Trimmed_grid_points
 constexpr int grid_corner_ring[4] = {1, 1, 0, 0};
 constexpr int grid_corner_position[4] = {1, 0, 0, 1};
 
-// The trimmed grid of `pm` whose rows run along lattice direction
-// `row_direction`, and its lattice points; an empty grid (rows == 0) when
-// the quads do not form one, or form a grid without a missing cell (which
-// quad_grid() takes), or a grid of fewer than 2 rows or 3 columns.
-template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
-Quad_grid trimmed_quad_grid(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, int row_direction,
-                            Trimmed_grid_points& points)
+// The cell of every face on the square lattice and its face edge on the
+// cell's -y side, running towards +x (side m of a face, 0: -y, 1: +x, 2: +y,
+// 3: -x, is face edge bottom + m): a breadth-first search from face 0 at
+// cell (0, 0). False when the faces do not fit the lattice (two cells for a
+// face, or a face not reached). `face_of` maps indices to faces.
+template <typename PolygonMesh, typename FaceIndexMap>
+bool lattice_cells(const PolygonMesh& pm, FaceIndexMap fim,
+                   const std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor>& face_of,
+                   std::vector<std::array<long, 2> >& cell, std::vector<int>& bottom)
 {
-  typedef typename boost::graph_traits<PolygonMesh>::face_descriptor face_descriptor;
   typedef typename boost::graph_traits<PolygonMesh>::halfedge_descriptor halfedge_descriptor;
-  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
-  const std::size_t n = num_faces(pm);
-  const Quad_grid none;
-  points = Trimmed_grid_points();
-  if(n < 3)
-    return none;
-  std::vector<face_descriptor> face_of(n);
-  for(face_descriptor f : faces(pm))
-  {
-    if(degree(f, pm) != 4)
-      return none;
-    face_of[get(fim, f)] = f;
-  }
-  // Per face its cell and the face edge on its -y side, running towards +x;
-  // side m of a face (0: -y, 1: +x, 2: +y, 3: -x) is face edge bottom + m.
+  const std::size_t n = face_of.size();
   const long unset = (std::numeric_limits<long>::max)();
-  std::vector<std::array<long, 2> > cell(n, {unset, unset});
-  std::vector<int> bottom(n, 0);
+  cell.assign(n, {unset, unset});
+  bottom.assign(n, 0);
   const long step[4][2] = {{0, -1}, {1, 0}, {0, 1}, {-1, 0}};
   std::deque<std::size_t> queue(1, 0);
   cell[0] = {0, 0};
@@ -98,52 +86,58 @@ Quad_grid trimmed_quad_grid(const PolygonMesh& pm, FaceIndexMap fim, VertexPoint
         ++reached;
       }
       else if(cell[g] != at || bottom[g] != bottom_g)
-        return none;
+        return false;
     }
   }
-  if(reached != n)
-    return none;
-  // Rows along x: row y, column x. Rows along y: row x, column -y, so that
-  // the corners keep the faces' cyclic order.
-  long low[2] = {cell[0][0], cell[0][1]}, high[2] = {cell[0][0], cell[0][1]};
+  return reached == n;
+}
+
+// The bounding box of the cells: `low` and `high` corners per lattice axis.
+inline void lattice_bounds(const std::vector<std::array<long, 2> >& cell, long low[2], long high[2])
+{
+  low[0] = high[0] = cell[0][0];
+  low[1] = high[1] = cell[0][1];
   for(const std::array<long, 2>& c : cell)
     for(int d = 0; d < 2; ++d)
     {
       low[d] = (std::min)(low[d], c[std::size_t(d)]);
       high[d] = (std::max)(high[d], c[std::size_t(d)]);
     }
-  const std::size_t rows = std::size_t(high[1 - row_direction] - low[1 - row_direction] + 1),
-                    columns = std::size_t(high[row_direction] - low[row_direction] + 1);
-  if(rows < 2 || columns < 3 || rows * columns == n || double(rows) * double(columns) > 16.0 * double(n))
-    return none;
-  // Filled in place; rows stays 0 (no grid) until every check has passed.
-  Quad_grid trimmed;
-  std::vector<std::size_t>& face_at = trimmed.face_at;
-  std::vector<Panel>& corners = trimmed.corners;
-  std::vector<int>& corner_offset = trimmed.corner_offset;
-  face_at.assign(rows * columns, no_index());
-  corners.resize(n);
-  corner_offset.assign(n, 0);
-  Trimmed_grid_points lattice;
-  lattice.cell.assign((rows + 1) * (columns + 1), no_index());
-  lattice.corner.assign(lattice.cell.size(), 0);
-  std::vector<vertex_descriptor> vertex_at(lattice.cell.size());
+}
+
+// Fills `trimmed` (its rows and columns already set, its rows left at 0
+// by the caller until every check has passed) and `lattice` from the cells:
+// every face at its row and column, its corners in grid order, and each
+// lattice point's first cell and corner. Rows along x: row y, column x. Rows
+// along y: row x, column -y, so that the corners keep the faces' cyclic
+// order. False when two faces share a cell or two vertices a lattice point
+// (a slit).
+template <typename PolygonMesh, typename VertexPointMap>
+bool place_trimmed_cells(const PolygonMesh& pm, VertexPointMap vpm,
+                         const std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor>& face_of,
+                         const std::vector<std::array<long, 2> >& cell, const std::vector<int>& bottom,
+                         const long low[2], const long high[2], int row_direction, std::size_t columns,
+                         Quad_grid& trimmed, Trimmed_grid_points& lattice,
+                         std::vector<typename boost::graph_traits<PolygonMesh>::vertex_descriptor>& vertex_at)
+{
+  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
+  const std::size_t n = face_of.size();
   for(std::size_t f = 0; f < n; ++f)
   {
     const std::size_t r = std::size_t(row_direction == 0 ? cell[f][1] - low[1] : cell[f][0] - low[0]),
                       c = std::size_t(row_direction == 0 ? cell[f][0] - low[0] : high[1] - cell[f][1]);
-    if(face_at[r * columns + c] != no_index())
-      return none;
-    face_at[r * columns + c] = f;
+    if(trimmed.face_at[r * columns + c] != no_index())
+      return false;
+    trimmed.face_at[r * columns + c] = f;
     // Corner 0 is the +x,+y vertex of the face (rows along x), or its +x,-y
     // vertex (rows along y); face vertex bottom + 2, resp. bottom + 1.
-    corner_offset[f] = (bottom[f] + (row_direction == 0 ? 2 : 1)) % 4;
-    halfedge_descriptor h = halfedge(face_of[f], pm);
-    for(int j = 0; j < corner_offset[f]; ++j) h = next(h, pm);
+    trimmed.corner_offset[f] = (bottom[f] + (row_direction == 0 ? 2 : 1)) % 4;
+    auto h = halfedge(face_of[f], pm);
+    for(int j = 0; j < trimmed.corner_offset[f]; ++j) h = next(h, pm);
     for(int i = 0; i < 4; ++i, h = next(h, pm))
     {
       const vertex_descriptor v = target(h, pm);
-      corners[f][i] = to_eigen(get(vpm, v));
+      trimmed.corners[f][i] = to_eigen(get(vpm, v));
       const std::size_t p = (r + std::size_t(grid_corner_ring[i])) * (columns + 1) + c + std::size_t(grid_corner_position[i]);
       if(lattice.cell[p] == no_index())
       {
@@ -152,18 +146,73 @@ Quad_grid trimmed_quad_grid(const PolygonMesh& pm, FaceIndexMap fim, VertexPoint
         vertex_at[p] = v;
       }
       else if(vertex_at[p] != v)  // a slit: two vertices at one lattice point
-        return none;
+        return false;
     }
   }
-  // One lattice point per vertex: a surface that meets itself at a vertex
-  // would put that vertex at two.
-  std::vector<vertex_descriptor> seen;
+  return true;
+}
+
+// Whether every vertex has one lattice point: a surface that meets itself at
+// a vertex would put that vertex at two.
+template <typename VertexDescriptor>
+bool one_lattice_point_per_vertex(const Trimmed_grid_points& lattice, const std::vector<VertexDescriptor>& vertex_at)
+{
+  std::vector<VertexDescriptor> seen;
   seen.reserve(lattice.cell.size());
   for(std::size_t p = 0; p < lattice.cell.size(); ++p)
     if(lattice.cell[p] != no_index())
       seen.push_back(vertex_at[p]);
   std::sort(seen.begin(), seen.end());
-  if(std::adjacent_find(seen.begin(), seen.end()) != seen.end())
+  return std::adjacent_find(seen.begin(), seen.end()) == seen.end();
+}
+
+// The trimmed grid of `pm` whose rows run along lattice direction
+// `row_direction`, and its lattice points; an empty grid (rows == 0) when
+// the quads do not form one, or form a grid without a missing cell (which
+// quad_grid() takes), or a grid of fewer than 2 rows or 3 columns, or one
+// whose bounding box holds more than tuning::trimmed_grid_max_cells_per_face
+// cells per face.
+template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
+Quad_grid trimmed_quad_grid(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, int row_direction,
+                            Trimmed_grid_points& points)
+{
+  typedef typename boost::graph_traits<PolygonMesh>::face_descriptor face_descriptor;
+  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
+  const std::size_t n = num_faces(pm);
+  const Quad_grid none;
+  points = Trimmed_grid_points();
+  if(n < 3)
+    return none;
+  std::vector<face_descriptor> face_of(n);
+  for(face_descriptor f : faces(pm))
+  {
+    if(degree(f, pm) != 4)
+      return none;
+    face_of[get(fim, f)] = f;
+  }
+  std::vector<std::array<long, 2> > cell;
+  std::vector<int> bottom;
+  if(!lattice_cells(pm, fim, face_of, cell, bottom))
+    return none;
+  long low[2], high[2];
+  lattice_bounds(cell, low, high);
+  const std::size_t rows = std::size_t(high[1 - row_direction] - low[1 - row_direction] + 1),
+                    columns = std::size_t(high[row_direction] - low[row_direction] + 1);
+  if(rows < 2 || columns < 3 || rows * columns == n ||
+     double(rows) * double(columns) > tuning::trimmed_grid_max_cells_per_face * double(n))
+    return none;
+  // Filled in place; rows stays 0 (no grid) until every check has passed.
+  Quad_grid trimmed;
+  trimmed.face_at.assign(rows * columns, no_index());
+  trimmed.corners.resize(n);
+  trimmed.corner_offset.assign(n, 0);
+  Trimmed_grid_points lattice;
+  lattice.cell.assign((rows + 1) * (columns + 1), no_index());
+  lattice.corner.assign(lattice.cell.size(), 0);
+  std::vector<vertex_descriptor> vertex_at(lattice.cell.size());
+  if(!place_trimmed_cells(pm, vpm, face_of, cell, bottom, low, high, row_direction, columns, trimmed, lattice,
+                          vertex_at) ||
+     !one_lattice_point_per_vertex(lattice, vertex_at))
     return none;
   trimmed.rows = rows;
   trimmed.columns = columns;

@@ -30,6 +30,149 @@ namespace CGAL {
 namespace Tilable_surfaces {
 namespace internal {
 
+// The label of the cell of row r and column c of `grid`, no_index() at a
+// missing cell of a trimmed grid.
+inline std::size_t grid_cell_label(const Quad_grid& grid, const std::vector<std::size_t>& label, std::size_t r,
+                                   std::size_t c)
+{
+  const std::size_t f = grid.face_at[r * grid.columns + c];
+  return f == no_index() ? no_index() : label[f];
+}
+
+// The run of rows of every row: rows r and r + 1 share a motion when a
+// cluster holds a quad of both. With `one_run` (a trimmed grid, or one
+// closed across its rows, swept as one run by sweep_clusterings(), whose
+// columns may be cut into pieces), every row is in run 0.
+inline std::vector<std::size_t> grid_row_runs(const Quad_grid& grid, const std::vector<std::size_t>& label,
+                                              bool one_run)
+{
+  std::vector<std::size_t> run_of(grid.rows, 0);
+  for(std::size_t r = 1; r < grid.rows && !one_run; ++r)
+  {
+    bool tied = false;
+    for(std::size_t c = 0; c < grid.columns && !tied; ++c)
+      tied = grid_cell_label(grid, label, r, c) != no_index() &&
+             grid_cell_label(grid, label, r, c) == grid_cell_label(grid, label, r - 1, c);
+    run_of[r] = run_of[r - 1] + (tied ? 0 : 1);
+  }
+  return run_of;
+}
+
+// How the clusters of `label` lie in the runs `run_of` of the grid.
+enum class Sweep_layout { NONE, COLUMNS_OF_RUNS, COLUMN_RUNS };
+
+// COLUMNS_OF_RUNS when every cluster lies in one column and one run,
+// COLUMN_RUNS when the grid is one run whose clusters are runs of columns
+// (screw_column_runs()), NONE otherwise. `run_of_column` receives the label
+// of the first quad of every column.
+inline Sweep_layout sweep_layout(const Quad_grid& grid, const std::vector<std::size_t>& label,
+                                 const std::vector<std::size_t>& run_of, std::vector<std::size_t>& run_of_column)
+{
+  const std::size_t rows = grid.rows, columns = grid.columns;
+  const std::size_t k = *std::max_element(label.begin(), label.end()) + 1;
+  std::vector<std::size_t> column_of(k, no_index()), run_of_cluster(k, no_index());
+  bool fits = true;
+  for(std::size_t r = 0; r < rows && fits; ++r)
+    for(std::size_t c = 0; c < columns && fits; ++c)
+    {
+      const std::size_t l = grid_cell_label(grid, label, r, c);
+      if(l == no_index())
+        continue;
+      if(column_of[l] == no_index())
+      {
+        column_of[l] = c;
+        run_of_cluster[l] = run_of[r];
+      }
+      fits = column_of[l] == c && run_of_cluster[l] == run_of[r];
+    }
+  run_of_column.assign(columns, no_index());
+  for(std::size_t r = 0; r < rows; ++r)
+    for(std::size_t c = 0; c < columns; ++c)
+      if(run_of_column[c] == no_index())
+        run_of_column[c] = grid_cell_label(grid, label, r, c);
+  if(fits)
+    return Sweep_layout::COLUMNS_OF_RUNS;
+  bool column_runs = run_of.back() == 0;
+  for(std::size_t r = 1; r < rows && column_runs; ++r)
+    for(std::size_t c = 0; c < columns && column_runs; ++c)
+      column_runs = grid_cell_label(grid, label, r, c) == no_index() ||
+                    grid_cell_label(grid, label, r, c) == run_of_column[c];
+  return column_runs ? Sweep_layout::COLUMN_RUNS : Sweep_layout::NONE;
+}
+
+// The input positions `points` with the points present of the rings moved to
+// the swept `surface` (rings side by side), rigidly aligned with the input
+// (Umeyama, no scale). `ring`: the input rings, `rings`: their vertex
+// indices, `present`: per ring, 1 or 0 per point. A closed grid's last ring
+// is its first, and is not placed twice.
+inline Point_matrix placed_sweep(const Point_matrix& points, const Eigen::Matrix3Xd& surface,
+                                 const std::vector<Eigen::Matrix3Xd>& ring,
+                                 const std::vector<std::vector<std::size_t> >& rings,
+                                 const std::vector<Eigen::ArrayXd>& present, bool closed)
+{
+  const std::size_t rows = ring.size() - 1;
+  const Eigen::Index width = Eigen::Index(rings[0].size());
+  Eigen::Matrix3Xd input(3, width * Eigen::Index(rows + 1)), swept_points(3, input.cols());
+  std::vector<std::size_t> vertex_of;
+  const std::size_t distinct_rings = closed ? rows : rows + 1;
+  for(std::size_t i = 0; i < distinct_rings; ++i)
+    for(Eigen::Index j = 0; j < width; ++j)
+      if(present[i](j) > 0)
+      {
+        input.col(Eigen::Index(vertex_of.size())) = ring[i].col(j);
+        swept_points.col(Eigen::Index(vertex_of.size())) = surface.col(width * Eigen::Index(i) + j);
+        vertex_of.push_back(rings[i][std::size_t(j)]);
+      }
+  const Eigen::Index count = Eigen::Index(vertex_of.size());
+  const Eigen::Matrix3Xd aligned =
+    apply_motion(Eigen::umeyama(swept_points.leftCols(count), input.leftCols(count), false), swept_points.leftCols(count));
+  Point_matrix start = points;
+  for(Eigen::Index p = 0; p < count; ++p)
+    start.row(Eigen::Index(vertex_of[std::size_t(p)])) = aligned.col(p).transpose();
+  return start;
+}
+
+// The start of quad_grid_sweep_start() on the grid `grid` of `pm` (its
+// lattice points `points_of_grid` when trimmed); empty when the clusters do
+// not lie as a sweep of it.
+template <typename PolygonMesh, typename VertexIndexMap>
+Point_matrix grid_sweep_start(const PolygonMesh& pm, VertexIndexMap vim,
+                              const std::vector<typename boost::graph_traits<PolygonMesh>::face_descriptor>& face_of,
+                              const Quad_grid& grid, const Trimmed_grid_points& points_of_grid,
+                              const Point_matrix& points, const std::vector<std::size_t>& label, bool closed)
+{
+  typedef typename boost::graph_traits<PolygonMesh>::halfedge_descriptor halfedge_descriptor;
+  const std::size_t rows = grid.rows, columns = grid.columns;
+  const bool one_run = closed || !points_of_grid.cell.empty();
+  const std::vector<std::size_t> run_of = grid_row_runs(grid, label, one_run);
+  std::vector<std::size_t> run_of_column;
+  const Sweep_layout layout = sweep_layout(grid, label, run_of, run_of_column);
+  if(layout == Sweep_layout::NONE)
+    return Point_matrix();
+  const bool column_runs = layout == Sweep_layout::COLUMN_RUNS;
+  auto vertex = [&](std::size_t r, std::size_t c, int i) {
+    const std::size_t f = grid.face_at[r * columns + c];
+    halfedge_descriptor h = halfedge(face_of[f], pm);
+    for(int j = 0; j < grid.corner_offset[f] + i; ++j)
+      h = next(h, pm);
+    return std::size_t(get(vim, target(h, pm)));
+  };
+  std::vector<Eigen::ArrayXd> present;
+  const std::vector<std::vector<std::size_t> > rings = present_grid_rings(grid, points_of_grid, vertex, present);
+  if(rings.empty())
+    return Point_matrix();
+  const Eigen::Index width = Eigen::Index(rings[0].size());
+  std::vector<Eigen::Matrix3Xd> ring(rows + 1, Eigen::Matrix3Xd::Zero(3, width));
+  for(std::size_t i = 0; i <= rows; ++i)
+    for(Eigen::Index j = 0; j < width; ++j)
+      if(present[i](j) > 0)
+        ring[i].col(j) = points.row(Eigen::Index(rings[i][std::size_t(j)])).transpose();
+  Swept_section swept = swept_section(ring, run_of, column_runs, present, closed);
+  if(!swept.valid || (column_runs && !fit_screw_column_runs(swept.section, swept.motion[0], run_of_column)))
+    return Point_matrix();
+  return placed_sweep(points, swept.swept(), ring, rings, present, closed);
+}
+
 // Positions, by vertex index, at which the clustering `label` (by face
 // index) is exact, as described above; an empty matrix when the quads do
 // not form a grid, full or trimmed (trimmed_grid.h: only the points
@@ -49,7 +192,6 @@ Point_matrix quad_grid_sweep_start(const PolygonMesh& pm, FaceIndexMap fim, Vert
                                    std::vector<Quad_orientation>* orientation, bool closed_only)
 {
   typedef typename boost::graph_traits<PolygonMesh>::face_descriptor face_descriptor;
-  typedef typename boost::graph_traits<PolygonMesh>::halfedge_descriptor halfedge_descriptor;
   std::vector<face_descriptor> face_of(num_faces(pm));
   for(face_descriptor f : faces(pm))
     face_of[get(fim, f)] = f;
@@ -60,99 +202,12 @@ Point_matrix quad_grid_sweep_start(const PolygonMesh& pm, FaceIndexMap fim, Vert
     const Quad_grid grid = full_or_trimmed_grid(pm, fim, vpm, strips, row_direction, points_of_grid);
     if(grid.rows == 0)
       continue;
-    const std::size_t rows = grid.rows, columns = grid.columns;
-    // no_index() at a missing cell of a trimmed grid.
-    auto label_at = [&](std::size_t r, std::size_t c) {
-      const std::size_t f = grid.face_at[r * columns + c];
-      return f == no_index() ? no_index() : label[f];
-    };
-    // Rows r and r + 1 share a motion when a cluster holds a quad of both. A
-    // trimmed grid, or one closed across its rows, is swept as one run
-    // (sweep_clusterings()), whose columns may be cut into pieces.
     const bool closed = closed_across_rows(grid, points_of_grid);
     if(closed_only && !closed)
       continue;
-    const bool one_run = closed || !points_of_grid.cell.empty();
-    std::vector<std::size_t> run_of(rows, 0);
-    for(std::size_t r = 1; r < rows && !one_run; ++r)
-    {
-      bool tied = false;
-      for(std::size_t c = 0; c < columns && !tied; ++c)
-        tied = label_at(r, c) != no_index() && label_at(r, c) == label_at(r - 1, c);
-      run_of[r] = run_of[r - 1] + (tied ? 0 : 1);
-    }
-    // Every cluster in one column and one run, or one run of rows whose
-    // clusters are runs of columns (screw_column_runs()).
-    const std::size_t k = *std::max_element(label.begin(), label.end()) + 1;
-    std::vector<std::size_t> column_of(k, no_index()), run_of_cluster(k, no_index());
-    bool fits = true, column_runs = false;
-    for(std::size_t r = 0; r < rows && fits; ++r)
-      for(std::size_t c = 0; c < columns && fits; ++c)
-      {
-        const std::size_t l = label_at(r, c);
-        if(l == no_index())
-          continue;
-        if(column_of[l] == no_index())
-        {
-          column_of[l] = c;
-          run_of_cluster[l] = run_of[r];
-        }
-        fits = column_of[l] == c && run_of_cluster[l] == run_of[r];
-      }
-    // The label of the first quad of every column.
-    std::vector<std::size_t> run_of_column(columns, no_index());
-    for(std::size_t r = 0; r < rows; ++r)
-      for(std::size_t c = 0; c < columns; ++c)
-        if(run_of_column[c] == no_index())
-          run_of_column[c] = label_at(r, c);
-    if(!fits && run_of.back() == 0)
-    {
-      column_runs = true;
-      for(std::size_t r = 1; r < rows && column_runs; ++r)
-        for(std::size_t c = 0; c < columns && column_runs; ++c)
-          column_runs = label_at(r, c) == no_index() || label_at(r, c) == run_of_column[c];
-    }
-    if(!fits && !column_runs)
+    Point_matrix start = grid_sweep_start(pm, vim, face_of, grid, points_of_grid, points, label, closed);
+    if(start.rows() == 0)
       continue;
-    auto vertex = [&](std::size_t r, std::size_t c, int i) {
-      const std::size_t f = grid.face_at[r * columns + c];
-      halfedge_descriptor h = halfedge(face_of[f], pm);
-      for(int j = 0; j < grid.corner_offset[f] + i; ++j)
-        h = next(h, pm);
-      return std::size_t(get(vim, target(h, pm)));
-    };
-    std::vector<Eigen::ArrayXd> present;
-    const std::vector<std::vector<std::size_t> > rings = present_grid_rings(grid, points_of_grid, vertex, present);
-    if(rings.empty())
-      continue;
-    const Eigen::Index width = Eigen::Index(rings[0].size());
-    std::vector<Eigen::Matrix3Xd> ring(rows + 1, Eigen::Matrix3Xd::Zero(3, width));
-    for(std::size_t i = 0; i <= rows; ++i)
-      for(Eigen::Index j = 0; j < width; ++j)
-        if(present[i](j) > 0)
-          ring[i].col(j) = points.row(Eigen::Index(rings[i][std::size_t(j)])).transpose();
-    Swept_section swept = swept_section(ring, run_of, column_runs, present, closed);
-    if(!swept.valid || (column_runs && !fit_screw_column_runs(swept.section, swept.motion[0], run_of_column)))
-      continue;
-    const Eigen::Matrix3Xd surface = swept.swept();
-    // The swept points of the rings' points present, and the input's.
-    Eigen::Matrix3Xd input(3, width * Eigen::Index(rows + 1)), swept_points(3, input.cols());
-    std::vector<std::size_t> vertex_of;
-    const std::size_t distinct_rings = closed ? rows : rows + 1;  // a closed grid's last ring is its first
-    for(std::size_t i = 0; i < distinct_rings; ++i)
-      for(Eigen::Index j = 0; j < width; ++j)
-        if(present[i](j) > 0)
-        {
-          input.col(Eigen::Index(vertex_of.size())) = ring[i].col(j);
-          swept_points.col(Eigen::Index(vertex_of.size())) = surface.col(width * Eigen::Index(i) + j);
-          vertex_of.push_back(rings[i][std::size_t(j)]);
-        }
-    const Eigen::Index count = Eigen::Index(vertex_of.size());
-    const Eigen::Matrix3Xd aligned =
-      apply_motion(Eigen::umeyama(swept_points.leftCols(count), input.leftCols(count), false), swept_points.leftCols(count));
-    Point_matrix start = points;
-    for(Eigen::Index p = 0; p < count; ++p)
-      start.row(Eigen::Index(vertex_of[std::size_t(p)])) = aligned.col(p).transpose();
     // Corner i in grid order is the face's vertex corner_offset + i.
     if(orientation != nullptr)
       for(std::size_t f = 0; f < grid.corner_offset.size(); ++f)

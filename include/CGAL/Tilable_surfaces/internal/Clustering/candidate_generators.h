@@ -1,0 +1,79 @@
+// Copyright (c) 2026 Tilable_surfaces contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_CANDIDATE_GENERATORS_H
+#define CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_CANDIDATE_GENERATORS_H
+
+// The registration of the candidate generators (models of CandidateGenerator,
+// candidate_generator.h): their origins, the traits of each origin, and the
+// lists Quad_clusterer runs. A new generator adds here its origin (if new)
+// with its traits row, its include, and its place in a list; its model lives
+// in its own header, and its documentation on the concept page and in the
+// user manual's table: three places in all.
+
+#include <CGAL/Tilable_surfaces/internal/Clustering/candidate_generator.h>
+#include <CGAL/Tilable_surfaces/internal/tuning.h>
+
+#include <CGAL/Tilable_surfaces/internal/Clustering/beam_search.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/kmeans_generator.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/segment_candidates.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/strip_generator.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/sweep_candidates.h>
+
+namespace CGAL {
+namespace Tilable_surfaces {
+
+/// Where a candidate of the pool of `cluster_quads()` comes from: the
+/// generator that made it (user manual, section Candidate generators).
+/// `HIERARCHICAL`: the last beam of binary merges.
+/// `KMEANS`: k-means on the quad descriptors.
+/// `QUAD_STRIPS`: quad strips merged greedily.
+/// `GRID_SEGMENTS`: runs of rows of a quad grid, each a segment of column
+/// molds or a band of one mold, with K molds, or with fewer and their
+/// largest clusters split by shape until K (user manual, section
+/// TS_Fidelity).
+/// `GRID_SWEEPS`: every column of a run of rows of a quad grid is one
+/// cluster; such a clustering is exact on a swept surface built directly
+/// (user manual, section TS_Sweeps). These are never the configuration
+/// `cluster_quads()` returns; `K_set_tilable_surface::optimize_closest()`
+/// solves them first, from that surface.
+enum Candidate_origins::Origin : int { HIERARCHICAL, KMEANS, QUAD_STRIPS, GRID_SEGMENTS, GRID_SWEEPS };
+
+namespace internal {
+
+// One row per origin, in the order of the enumerators.
+inline const Candidate_origin_traits& origin_traits(Candidate_origins::Origin origin)
+{
+  static const Candidate_origin_traits traits[] = {
+    // name, selectable_by_score, solved_first_from_start, extra_quota_divisor
+    {"hierarchical", true, false, 0},
+    {"k-means", true, false, 0},
+    {"quad-strip", true, false, 0},
+    {"grid-segment", true, false, tuning::grid_segment_extra_quota_divisor},
+    {"sweep", false, true, 0}};
+  return traits[origin];
+}
+
+// A list of generators, run in its order.
+template <typename... Generators>
+struct Generator_list
+{
+};
+
+// Step 2 of Quad_clusterer: the beam of merges down to K.
+typedef Generator_list<Hierarchical_generator> Merge_generators;
+
+// Step 3: the other candidates. Generators whose candidates are solved first
+// from their exact start run first; when one of those ends the search
+// (Clustering_settings::sweep_ends_search), the rest are not run. The pool
+// holds the candidates in this order, those solved first from their start
+// last.
+typedef Generator_list<Sweep_generator, Kmeans_generator, Quad_strip_generator, Grid_segment_generator,
+                       Split_segment_generator>
+  Other_generators;
+
+} // namespace internal
+} // namespace Tilable_surfaces
+} // namespace CGAL
+
+#endif // CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_CANDIDATE_GENERATORS_H

@@ -9,7 +9,7 @@
 // Usage: benchmark_clustering [K] [max_quads]
 #include "benchmark_surfaces.h"
 
-#include <CGAL/Tilable_surfaces/cluster_quads.h>
+#include <CGAL/Tilable_surfaces/cluster_panels.h>
 
 #include <CGAL/Real_timer.h>
 #include <CGAL/Simple_cartesian.h>
@@ -40,7 +40,7 @@ int main(int argc, char** argv)
     auto orientation = m.add_property_map<Mesh::Face_index, int>("f:orientation", 0).first;
     CGAL::Real_timer timer;
     timer.start();
-    const TS::Clustering_result r = TS::cluster_quads(
+    const TS::Clustering_result r = TS::cluster_panels(
       m, TS::parameters::number_of_tiles(k).face_cluster_map(cluster).face_orientation_map(orientation));
     timer.stop();
     std::cout << "| " << m.number_of_faces() << " | " << k << " | "

@@ -209,7 +209,7 @@ int main(int argc, char** argv)
     Mesh mesh;
     try
     {
-      TS::IO::read_quad_mesh(file, mesh);
+      TS::IO::read_panel_mesh(file, mesh);
       double seconds_taken = 0;
       run(name, mesh,
           k > 0 ? k : (std::max)(std::size_t(4), std::size_t(mesh.number_of_faces()) / 25), budget,

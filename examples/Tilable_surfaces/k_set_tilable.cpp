@@ -269,7 +269,7 @@ Mesh read_input(const std::string& path)
   try
   {
     // Counts checked against the file size, unused vertices kept.
-    for(const std::string& w : TS::IO::read_quad_mesh(path, mesh).warnings)
+    for(const std::string& w : TS::IO::read_panel_mesh(path, mesh).warnings)
       std::cerr << "[k_set_tilable] warning: " << path << ": " << w << "\n";
   }
   catch(const TS::Invalid_input& e)

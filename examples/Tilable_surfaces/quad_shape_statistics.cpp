@@ -61,7 +61,7 @@ int main(int argc, char** argv)
   }
   try
   {
-    TS::validate_quad_mesh(mesh);
+    TS::validate_panel_mesh(mesh);
   }
   catch(const TS::Invalid_input& e)
   {

@@ -42,8 +42,8 @@ inline bool fuzz_one_input(const std::string& data)
   Mesh mesh;
   try
   {
-    TS::IO::read_quad_mesh(in, fuzz_one_input_detail::format_of(data), mesh, "fuzz input");
-    TS::validate_quad_mesh(mesh);
+    TS::IO::read_panel_mesh(in, fuzz_one_input_detail::format_of(data), mesh, "fuzz input");
+    TS::validate_panel_mesh(mesh);
     if(mesh.number_of_faces() > 40)
       return true;
     auto cluster = mesh.add_property_map<Mesh::Face_index, int>("f:c", 0).first;

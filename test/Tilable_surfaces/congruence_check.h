@@ -33,7 +33,7 @@ double congruence_by_umeyama(const Mesh& m, ClusterMap cluster, OrientationMap o
   double worst = 0;
   for(auto f : faces(m))
   {
-    const TS::Panel q = TS::face_panel(f, m, TS::Quad_orientation(int(get(orientation, f))));
+    const TS::Panel q = TS::face_panel(f, m, TS::Panel_orientation(int(get(orientation, f))));
     Corners x(3, q.size());
     for(int i = 0; i < q.size(); ++i) x.col(i) = q[i];
     const auto it = first.emplace(int(get(cluster, f)), x).first;

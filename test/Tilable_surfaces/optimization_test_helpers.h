@@ -74,7 +74,7 @@ Mesh moved_to(const Mesh& m, const Points& points)
 // Clustering maps on `m` holding `label` (by face index) and `orientation`,
 // every orientation 0 when it is empty.
 inline Clustering clustered(Mesh& m, const std::vector<std::size_t>& label,
-                            const std::vector<TS::Quad_orientation>& orientation = {})
+                            const std::vector<TS::Panel_orientation>& orientation = {})
 {
   Clustering c = add_clustering_maps(m);
   for(Face f : faces(m))
@@ -153,7 +153,7 @@ inline double pairwise_congruence_error(const Mesh& mesh, const Clustering& c)
   double worst = 0;
   for(Face f : faces(mesh))
   {
-    const TS::Panel q = TS::face_panel(f, mesh, TS::Quad_orientation(c.orientation[f]));
+    const TS::Panel q = TS::face_panel(f, mesh, TS::Panel_orientation(c.orientation[f]));
     const int k = c.cluster[f];
     if(!seen[k])
     {

@@ -133,8 +133,8 @@ std::vector<Entry_point> entry_points()
     return TSP::face_cluster_map(in.cluster).face_orientation_map(in.orientation);
   };
   return {
-    {"cluster_quads", false,
-     [=](Case_input& in, std::ostream&) { TS::cluster_quads(in.mesh, maps(in).number_of_tiles(1)); }},
+    {"cluster_panels", false,
+     [=](Case_input& in, std::ostream&) { TS::cluster_panels(in.mesh, maps(in).number_of_tiles(1)); }},
     {"Edge_sharing_graph", true,
      [](Case_input& in, std::ostream&) { TS::Edge_sharing_graph<Mesh>(in.mesh, 2, in.cluster, in.orientation); }},
     {"optimize_tilable_surface", true,

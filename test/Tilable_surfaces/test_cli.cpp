@@ -130,7 +130,7 @@ void check_run_on(const std::string& surface, int k, const std::string& catalog_
   std::vector<std::vector<TS::Panel> > instances(static_cast<std::size_t>(k));
   for(auto f : faces(output))
     instances[std::size_t(cluster.first[f])].push_back(
-      TS::face_panel(f, output, TS::Quad_orientation(int(orientation.first[f]))));
+      TS::face_panel(f, output, TS::Panel_orientation(int(orientation.first[f]))));
   double worst = 0;
   for(const auto& group : instances)
     for(const TS::Panel& q : group)

@@ -110,7 +110,7 @@ TEST(EdgeSharingGraph, FourByFourQuadrantsCountedByHand)
   // Clusters 0 and 3 share no component; merging them with the identity
   // correspondence joins {0,1}-vertical with {2,3}-vertical and {0,2}- with
   // {1,3}-horizontal: DOF 2.
-  EXPECT_EQ(g.merge_clusters(0, 3, TS::Quad_orientation(0)), 2u);
+  EXPECT_EQ(g.merge_clusters(0, 3, TS::Panel_orientation(0)), 2u);
   EXPECT_FALSE(g.is_alive(3));
 }
 
@@ -134,7 +134,7 @@ TEST(EdgeSharingGraph, CopiesAreIndependent)
   Labelling l = label(m, [](int f) { return (f % 4) % 2 + 2 * ((f / 4) % 2); });
   TS::Edge_sharing_graph<Mesh> g(m, 4, l.cluster, l.orientation);
   TS::Edge_sharing_graph<Mesh> copy = g;
-  copy.merge_clusters(0, 1, TS::Quad_orientation(0));
+  copy.merge_clusters(0, 1, TS::Panel_orientation(0));
   EXPECT_EQ(g.degree_of_flexibility(), 8u);
   EXPECT_LT(copy.degree_of_flexibility(), 8u);
   EXPECT_TRUE(g.is_alive(1));
@@ -171,8 +171,8 @@ TEST(EdgeSharingGraph, LengthDeviationByHand)
   Labelling two = label(m2, [](int f) { return f; });
   TS::Edge_sharing_graph<Mesh> apart(m2, 2, two.cluster, two.orientation);
   EXPECT_NEAR(apart.length_deviation(), 0.0, 1e-12);
-  EXPECT_NEAR(apart.length_deviation_after_merge(0, 1, TS::Quad_orientation(0)), 1.0, 1e-12);
-  apart.merge_clusters(0, 1, TS::Quad_orientation(0));
+  EXPECT_NEAR(apart.length_deviation_after_merge(0, 1, TS::Panel_orientation(0)), 1.0, 1e-12);
+  apart.merge_clusters(0, 1, TS::Panel_orientation(0));
   EXPECT_NEAR(apart.length_deviation(), 1.0, 1e-12);
 }
 

@@ -100,7 +100,7 @@ TEST_P(Invariance, SimilarityOfTheInputGivesTheSameClusteringAndTheSimilarResult
 }
 
 // The vertices and the faces renumbered at random, each face starting at the
-// same corner (the canonical face order of cluster_quads() starts each face's
+// same corner (the canonical face order of cluster_panels() starts each face's
 // neighbours at halfedge(f)).
 TEST_P(Invariance, RenumberingTheVerticesAndFacesGivesTheSameResultRenumbered)
 {

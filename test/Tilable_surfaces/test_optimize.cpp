@@ -4,7 +4,7 @@
 
 #include "optimization_test_helpers.h"
 
-#include <CGAL/Tilable_surfaces/cluster_quads.h>
+#include <CGAL/Tilable_surfaces/cluster_panels.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/sparse_solver.h>
 #include <CGAL/Tilable_surfaces/optimize_tilable_surface.h>
 
@@ -362,7 +362,7 @@ TEST(Optimize, ConstrainedSolverBeatsPaperMethodOnSeashell)
   Mesh mesh = load("seashell.off");
   Clustering c = add_clustering_maps(mesh);
   c.K = 96;
-  TS::cluster_quads(mesh, TS::parameters::number_of_tiles(c.K).face_cluster_map(c.cluster)
+  TS::cluster_panels(mesh, TS::parameters::number_of_tiles(c.K).face_cluster_map(c.cluster)
                             .face_orientation_map(c.orientation).random_seed(0u));
   expect_constrained_solver_beats_paper_method("seashell K=96", mesh, c);
 }

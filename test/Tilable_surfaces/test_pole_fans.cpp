@@ -147,7 +147,7 @@ TEST(PoleFans, CappedDomeSweepsAsARotation)
   }
 
   const TSI::Point_matrix input = input_points(m);
-  std::vector<TS::Quad_orientation> orientation(num_faces(m));
+  std::vector<TS::Panel_orientation> orientation(num_faces(m));
   const TSI::Point_matrix start =
     TSI::sweep_start(m, get(CGAL::face_index, m), get(CGAL::vertex_index, m), get(CGAL::vertex_point, m), input,
                      label, &orientation);
@@ -208,7 +208,7 @@ TEST(PoleFans, ClosedShellHasAMoldPerFan)
   EXPECT_EQ(quads.count(*north.begin()) + quads.count(*south.begin()), 0u);
 
   const TSI::Point_matrix input = input_points(m);
-  std::vector<TS::Quad_orientation> orientation(faces);
+  std::vector<TS::Panel_orientation> orientation(faces);
   const TSI::Point_matrix start =
     TSI::sweep_start(m, get(CGAL::face_index, m), get(CGAL::vertex_index, m), get(CGAL::vertex_point, m), input,
                      label, &orientation);

@@ -48,7 +48,7 @@ TS::Panel mirrored_x(const TS::Panel& q)
 }
 
 // The face that carries template q with correspondence o: v[o(i)] = q[i].
-TS::Panel face_with_orientation(const TS::Panel& q, TS::Quad_orientation o)
+TS::Panel face_with_orientation(const TS::Panel& q, TS::Panel_orientation o)
 {
   TS::Panel v;
   for(int i = 0; i < 4; ++i) v[o(i)] = q[i];
@@ -73,23 +73,23 @@ TEST(QuadOrientation, MatchesTheDefinitionOfMethodNotes)
     for(int i = 0; i < 4; ++i)
     {
       const int expected = o < 4 ? (i + o) % 4 : ((o - i) % 4 + 4) % 4;
-      EXPECT_EQ(TS::Quad_orientation(o)(i), expected) << "o=" << o << " i=" << i;
+      EXPECT_EQ(TS::Panel_orientation(o)(i), expected) << "o=" << o << " i=" << i;
     }
-  EXPECT_THROW(TS::Quad_orientation(8), TS::Invalid_input);
-  EXPECT_THROW(TS::Quad_orientation(-1), TS::Invalid_input);
+  EXPECT_THROW(TS::Panel_orientation(8), TS::Invalid_input);
+  EXPECT_THROW(TS::Panel_orientation(-1), TS::Invalid_input);
 }
 
 TEST(QuadOrientation, InverseAndCompositionArePermutationAlgebra)
 {
   for(int a = 0; a < 8; ++a)
   {
-    const TS::Quad_orientation oa(a);
+    const TS::Panel_orientation oa(a);
     for(int i = 0; i < 4; ++i)
       EXPECT_EQ(oa.inverse()(oa(i)), i);
-    EXPECT_EQ(oa * oa.inverse(), TS::Quad_orientation(0));
+    EXPECT_EQ(oa * oa.inverse(), TS::Panel_orientation(0));
     for(int b = 0; b < 8; ++b)
     {
-      const TS::Quad_orientation ob(b);
+      const TS::Panel_orientation ob(b);
       for(int i = 0; i < 4; ++i)
         EXPECT_EQ((oa * ob)(i), oa(ob(i)));
     }
@@ -100,7 +100,7 @@ TEST(QuadOrientation, TemplateEdgesGoToTheFaceEdgeWithTheSameEndpoints)
 {
   for(int o = 0; o < 8; ++o)
   {
-    const TS::Quad_orientation orientation(o);
+    const TS::Panel_orientation orientation(o);
     for(int k = 0; k < 4; ++k)
     {
       const int j = orientation.face_edge(k);
@@ -144,14 +144,14 @@ TEST(QuadShape, SignedVolumeFollowsTheSignOfTheRelabelling)
   ASSERT_GT(std::abs(v), 1e-3);
   for(int o = 0; o < 8; ++o)
   {
-    const TS::Quad_orientation orientation(o);
+    const TS::Panel_orientation orientation(o);
     const std::array<int, 4> p{{orientation(0), orientation(1), orientation(2), orientation(3)}};
     EXPECT_NEAR(TS::signed_volume(TS::reoriented(q, orientation)), permutation_sign(p) * v, 1e-15)
       << "o=" << o;
   }
   // A cyclic shift by one and the reversal o = 4 are odd: the sign flips.
-  EXPECT_LT(TS::signed_volume(TS::reoriented(q, TS::Quad_orientation(1))) * v, 0);
-  EXPECT_LT(TS::signed_volume(TS::reoriented(q, TS::Quad_orientation(4))) * v, 0);
+  EXPECT_LT(TS::signed_volume(TS::reoriented(q, TS::Panel_orientation(1))) * v, 0);
+  EXPECT_LT(TS::signed_volume(TS::reoriented(q, TS::Panel_orientation(4))) * v, 0);
   // A mirror flips it too.
   EXPECT_NEAR(TS::signed_volume(mirrored_x(q)), -v, 1e-15);
 }
@@ -166,7 +166,7 @@ TEST(QuadShape, RigidCopyHasZeroDissimilarityAndTheAppliedOrientation)
     const Vector3d t(3.0 * trial, -2.0, 7.5);
     for(int o = 0; o < 8; ++o)
     {
-      const TS::Panel face = face_with_orientation(moved(q, r, t), TS::Quad_orientation(o));
+      const TS::Panel face = face_with_orientation(moved(q, r, t), TS::Panel_orientation(o));
       const TS::Quad_match match = TS::best_match(q, face);
       EXPECT_LT(match.dissimilarity, 1e-12) << "o=" << o;
       EXPECT_EQ(match.orientation.index(), o);
@@ -193,7 +193,7 @@ TEST(QuadShape, MirrorImageIsNotACopyUnlessPlanar)
 TEST(QuadShape, TurnedOverCopiesNeedTheReversedOrientations)
 {
   const TS::Panel q = skew_quad();
-  const TS::Panel face = face_with_orientation(q, TS::Quad_orientation(5));
+  const TS::Panel face = face_with_orientation(q, TS::Panel_orientation(5));
   EXPECT_LT(TS::dissimilarity(q, face), 1e-12);
   EXPECT_GT(TS::dissimilarity(q, face, TS::NO_TURNED_OVER_PANELS), 1e-2);
   EXPECT_LT(TS::best_match(q, face, TS::NO_TURNED_OVER_PANELS).orientation.index(), 4);
@@ -270,7 +270,7 @@ TEST(QuadShape, DescriptorIsInvariantUnderMotionAndRelabelling)
   for(int o = 0; o < 8; ++o)
   {
     const TS::Panel other = TS::reoriented(moved(q, random_rotation(rng), Vector3d(1, 2, 3)),
-                                          TS::Quad_orientation(o));
+                                          TS::Panel_orientation(o));
     const TS::Quad_descriptor e = TS::shape_descriptor(other);
     for(int i = 0; i < 7; ++i)
       EXPECT_NEAR(d[i], e[i], 1e-12);
@@ -294,7 +294,7 @@ TEST(QuadOrientation, AdmissibleCorrespondencesAreTheSymmetriesOfThePolygon)
       int admissible = 0;
       for(int index = 0; index < 8; ++index)
       {
-        const TS::Quad_orientation o(index);
+        const TS::Panel_orientation o(index);
         if(!TS::is_admissible(o, n, policy))
           continue;
         ++admissible;

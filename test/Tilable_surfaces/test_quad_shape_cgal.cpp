@@ -35,18 +35,18 @@ void check_unit_grid()
   const auto f0 = CGAL::Euler::add_face(std::vector<vertex_descriptor>{v[0], v[1], v[4], v[3]}, mesh);
   CGAL::Euler::add_face(std::vector<vertex_descriptor>{v[1], v[2], v[5], v[4]}, mesh);
 
-  TS::validate_quad_mesh(mesh);
+  TS::validate_panel_mesh(mesh);
   // 7 edges of length 1.
   assert(std::abs(TS::mean_edge_length(mesh) - 1.0) < 1e-15);
 
   // Orientation 1: corner i is face vertex i + 1, so corner 0 is (1,0,0).
-  const TS::Panel q = TS::face_panel(f0, mesh, TS::Quad_orientation(1));
+  const TS::Panel q = TS::face_panel(f0, mesh, TS::Panel_orientation(1));
   assert(q[0] == Eigen::Vector3d(1, 0, 0));
   assert(q[1] == Eigen::Vector3d(1, 1, 0));
   assert(q[2] == Eigen::Vector3d(0, 1, 0));
   assert(q[3] == Eigen::Vector3d(0, 0, 0));
   // Orientation 4 reverses: corners are face vertices 0, 3, 2, 1.
-  const TS::Panel r = TS::face_panel(f0, mesh, TS::Quad_orientation(4));
+  const TS::Panel r = TS::face_panel(f0, mesh, TS::Panel_orientation(4));
   assert(r[1] == Eigen::Vector3d(0, 1, 0));
   assert(r[3] == Eigen::Vector3d(1, 0, 0));
   // Face edge j goes from face vertex j to j + 1: (v0,v1), (v1,v4), (v4,v3),
@@ -81,7 +81,7 @@ int main()
     std::string(CGAL_TILABLE_SURFACES_TEST_DATA) + "/monkey_saddle.off", saddle);
   assert(ok);
   assert(num_faces(saddle) == 100);
-  TS::validate_quad_mesh(saddle);
+  TS::validate_panel_mesh(saddle);
   assert(TS::mean_edge_length(saddle) >= 0.2);
   for(auto f : faces(saddle))
   {

@@ -7,7 +7,7 @@
 
 #include <CGAL/Tilable_surfaces/internal/Clustering/segment_candidates.h>
 #include <CGAL/Tilable_surfaces/cluster_editing.h>
-#include <CGAL/Tilable_surfaces/cluster_quads.h>
+#include <CGAL/Tilable_surfaces/cluster_panels.h>
 #include <CGAL/Tilable_surfaces/optimize_tilable_surface.h>
 
 #include <gtest/gtest.h>
@@ -123,13 +123,13 @@ TEST(SegmentCandidates, TorusPieceIsOneSegmentOfMirrorPairs)
   EXPECT_TRUE(found) << [&] { std::string s; for(const auto& l : labels) { for(std::size_t x : l) s += std::to_string(x) + " "; s += "\n"; } return s; }();
 }
 
-// cluster_quads() puts them in its pool, unless told not to.
+// cluster_panels() puts them in its pool, unless told not to.
 TEST(SegmentCandidates, JoinThePoolOfClusterQuadsUnlessTurnedOff)
 {
   Mesh m = tube<Mesh>(7, 8, [](int i) { return i <= 3 ? 1.0 : 2.0; });
   Clustering c = add_clustering_maps(m);
   auto count = [&](bool use) {
-    const TS::Clustering_result r = TS::cluster_quads(
+    const TS::Clustering_result r = TS::cluster_panels(
       m, TS::parameters::number_of_tiles(3).face_cluster_map(c.cluster).face_orientation_map(c.orientation)
            .use_segment_candidates(use));
     return std::count_if(r.candidates.begin(), r.candidates.end(), [](const TS::Clustering_candidate& x) {

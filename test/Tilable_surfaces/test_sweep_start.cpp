@@ -441,9 +441,9 @@ Mesh trimmed_roof()
 
 // Positions and orientations of the exact start of `label`.
 TSI::Point_matrix start_of(const Mesh& m, const std::vector<std::size_t>& label,
-                           std::vector<TS::Quad_orientation>& orientation)
+                           std::vector<TS::Panel_orientation>& orientation)
 {
-  orientation.assign(num_faces(m), TS::Quad_orientation());
+  orientation.assign(num_faces(m), TS::Panel_orientation());
   return TSI::sweep_start(m, get(CGAL::face_index, m), get(CGAL::vertex_index, m), get(CGAL::vertex_point, m),
                           TSI::read_points(m, get(CGAL::vertex_point, m), get(CGAL::vertex_index, m)), label,
                           &orientation);
@@ -453,7 +453,7 @@ TSI::Point_matrix start_of(const Mesh& m, const std::vector<std::size_t>& label,
 // at its start, which places every vertex; checked independently.
 void expect_exact_only_at_start(const Mesh& m, const std::vector<std::size_t>& label)
 {
-  std::vector<TS::Quad_orientation> orientation;
+  std::vector<TS::Panel_orientation> orientation;
   const TSI::Point_matrix start = start_of(m, label, orientation);
   ASSERT_EQ(std::size_t(start.rows()), num_vertices(m));
   Mesh input = m;
@@ -533,7 +533,7 @@ TEST(SweepStart, TrimmedCylinderIsItsOwnSweep)
   double closest = std::numeric_limits<double>::max();
   for(const std::vector<std::size_t>& label : sweeps(m, 4))
   {
-    std::vector<TS::Quad_orientation> orientation;
+    std::vector<TS::Panel_orientation> orientation;
     const TSI::Point_matrix start = start_of(m, label, orientation);
     ASSERT_EQ(start.rows(), input.rows());
     closest = (std::min)(closest, (start - input).rowwise().norm().maxCoeff());

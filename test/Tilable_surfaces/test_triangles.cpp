@@ -2,7 +2,7 @@
 // 6 correspondences), never in a cluster with quads. Shape analysis, the
 // edge-sharing graph, the clustering, the optimizer and the measure take them.
 #include <CGAL/Tilable_surfaces/Edge_sharing_graph.h>
-#include <CGAL/Tilable_surfaces/cluster_quads.h>
+#include <CGAL/Tilable_surfaces/cluster_panels.h>
 #include <CGAL/Tilable_surfaces/make_k_set_tilable.h>
 #include <CGAL/Tilable_surfaces/measure.h>
 #include <CGAL/Tilable_surfaces/optimize_tilable_surface.h>
@@ -66,7 +66,7 @@ TEST(Triangles, TheSixCorrespondencesOfATriangleAreItsSymmetries)
 {
   for(int index : {0, 1, 2, 4, 5, 6})
   {
-    const TS::Quad_orientation o(index);
+    const TS::Panel_orientation o(index);
     ASSERT_TRUE(o.is_valid_for(3));
     std::array<bool, 3> hit{{false, false, false}};
     for(int i = 0; i < 3; ++i)
@@ -81,14 +81,14 @@ TEST(Triangles, TheSixCorrespondencesOfATriangleAreItsSymmetries)
     EXPECT_TRUE(hit[0] && hit[1] && hit[2]) << index << " is a permutation";
     for(int other : {0, 1, 2, 4, 5, 6})
     {
-      const TS::Quad_orientation p(other), composed = TS::compose(o, p, 3);
+      const TS::Panel_orientation p(other), composed = TS::compose(o, p, 3);
       ASSERT_TRUE(composed.is_valid_for(3));
       for(int i = 0; i < 3; ++i)
         EXPECT_EQ(composed(i, 3), o(p(i, 3), 3));
     }
   }
-  EXPECT_FALSE(TS::Quad_orientation(3).is_valid_for(3));
-  EXPECT_FALSE(TS::Quad_orientation(7).is_valid_for(3));
+  EXPECT_FALSE(TS::Panel_orientation(3).is_valid_for(3));
+  EXPECT_FALSE(TS::Panel_orientation(7).is_valid_for(3));
 }
 
 TEST(Triangles, BestMatchRecoversTheRelabellingAndNeverMatchesAQuad)
@@ -97,7 +97,7 @@ TEST(Triangles, BestMatchRecoversTheRelabellingAndNeverMatchesAQuad)
   const Eigen::Matrix3d R = Eigen::AngleAxisd(0.7, Vector3d(1, 2, 3).normalized()).toRotationMatrix();
   for(int index : {0, 1, 2, 4, 5, 6})
   {
-    const TS::Quad_orientation o(index);
+    const TS::Panel_orientation o(index);
     // q lists the moved corners so that q[o(i)] = R p[i] + t.
     TS::Panel q = p;
     for(int i = 0; i < 3; ++i) q[o(i, 3)] = R * p[i] + Vector3d(5, -1, 2);
@@ -127,12 +127,12 @@ TEST(Triangles, EdgeSharingGraphOfTheHouseCountedByHand)
   EXPECT_EQ(g.component(0, 2), g.component(1, 0));
   EXPECT_NE(g.component(1, 1), g.component(1, 2));
   EXPECT_THROW(g.component(1, 3), TS::Invalid_input);
-  EXPECT_EQ(g.length_deviation_after_merge(0, 1, TS::Quad_orientation()),
+  EXPECT_EQ(g.length_deviation_after_merge(0, 1, TS::Panel_orientation()),
             std::numeric_limits<double>::infinity());
   TS::Edge_sharing_graph<Mesh> copy = g;
   try
   {
-    copy.merge_clusters(0, 1, TS::Quad_orientation());
+    copy.merge_clusters(0, 1, TS::Panel_orientation());
     ADD_FAILURE() << "a quad cluster and a triangle cluster were merged";
   }
   catch(const TS::Invalid_input& e)

@@ -43,10 +43,10 @@ Mesh grid(int n)
   return mesh;
 }
 
-// The message and location of the error validate_quad_mesh() throws.
+// The message and location of the error validate_panel_mesh() throws.
 TS::Invalid_input error_of(const Mesh& mesh)
 {
-  try { TS::validate_quad_mesh(mesh); }
+  try { TS::validate_panel_mesh(mesh); }
   catch(const TS::Invalid_input& e) { return e; }
   ADD_FAILURE() << "no error thrown";
   return TS::Invalid_input("none");
@@ -64,7 +64,7 @@ TEST(Validation, AcceptsTheSixPaperSurfacesAndOtherQuadMeshes)
   for(const char* name : {"monkey_saddle.off", "seashell.off", "swiss_re.off", "tunnel.off",
                           "decocube.off", "de_beers_ginza.off", "torus_quad.off",
                           "cross_quad.off", "quad_dome.obj", "mushroom.off"})
-    EXPECT_NO_THROW(TS::validate_quad_mesh(read(name))) << name;
+    EXPECT_NO_THROW(TS::validate_panel_mesh(read(name))) << name;
 }
 
 TEST(Validation, RefusesMeshesWithPolygonsOfFiveOrMoreVerticesNamingTheFirstOne)

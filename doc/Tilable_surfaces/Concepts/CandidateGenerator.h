@@ -3,7 +3,7 @@
 \cgalConcept
 
 The concept `CandidateGenerator` describes a source of candidate clusterings
-for the pool of `Tilable_surfaces::cluster_quads()` and of
+for the pool of `Tilable_surfaces::cluster_panels()` and of
 `Tilable_surfaces::K_set_tilable_surface` (user manual, section
 \ref TS_Candidate_generators).
 

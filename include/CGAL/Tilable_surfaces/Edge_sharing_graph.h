@@ -104,18 +104,18 @@ public:
 
   /// Builds the graph of a clustering of `pm` into `number_of_clusters`
   /// clusters, read from `face_cluster_map` (values 0..K-1) and
-  /// `face_orientation_map` (values 0..7, or `Quad_orientation`; those of a
+  /// `face_orientation_map` (values 0..7, or `Panel_orientation`; those of a
   /// triangle in 0, 1, 2, 4, 5, 6).
   ///
   /// \cgalNamedParamsBegin
-  ///   \cgalParamNBegin{vertex_point_map} the points, checked by `validate_quad_mesh()` and used for
+  ///   \cgalParamNBegin{vertex_point_map} the points, checked by `validate_panel_mesh()` and used for
   ///     the edge lengths of `length_deviation()` \cgalParamNEnd
   ///   \cgalParamNBegin{face_index_map} indices of the faces, for messages \cgalParamNEnd
   /// \cgalNamedParamsEnd
   /// Mesh edges are identified by the mesh's internal edge index
   /// (`CGAL::get_initialized_edge_index_map(pm)`); `pm` must not change
   /// while the graph is used.
-  /// \throws Invalid_input if `pm` fails `validate_quad_mesh()` (with the
+  /// \throws Invalid_input if `pm` fails `validate_panel_mesh()` (with the
   /// `vertex_point_map` of `np`, if any), a face has a cluster out of
   /// 0..K-1 or an orientation that is not one of its own, or a cluster holds
   /// both quads and triangles.
@@ -130,7 +130,7 @@ public:
   {}
 
   /// \cond SKIP_IN_MANUAL
-  // For the package's own use on a mesh `validate_quad_mesh()` accepted,
+  // For the package's own use on a mesh `validate_panel_mesh()` accepted,
   // with a clustering already read and checked.
   template <typename FaceIndexMap, typename VertexPointMap>
   Edge_sharing_graph(internal::Validated_mesh, const PolygonMesh& pm, FaceIndexMap fim,
@@ -155,7 +155,7 @@ public:
     {
       const face_descriptor f = face_of[fi];
       const std::size_t c = clustering.label[fi];
-      const Quad_orientation orientation = clustering.orientation[fi];
+      const Panel_orientation orientation = clustering.orientation[fi];
       const auto face_edges = face_edge_halfedges(f, pm);
       const int n = int(face_edges.size());
       for(int j = 0; j < n; ++j)
@@ -252,7 +252,7 @@ public:
   /// correspondence)`, without merging; infinite if the two clusters are not
   /// of the same kind.
   double length_deviation_after_merge(std::size_t kept, std::size_t removed,
-                                      Quad_orientation correspondence) const
+                                      Panel_orientation correspondence) const
   {
     const int n = corner_count(kept);
     if(corner_count(removed) != n)
@@ -292,7 +292,7 @@ public:
   /// caller's job). Returns the new degree of flexibility, which can only
   /// decrease. An S-quad and an S-triangle cannot be merged.
   std::size_t merge_clusters(std::size_t kept, std::size_t removed,
-                             Quad_orientation correspondence)
+                             Panel_orientation correspondence)
   {
     if(kept == removed || kept >= m_slot.size() || removed >= m_slot.size() ||
        !m_alive[m_slot[kept]] || !m_alive[m_slot[removed]])
@@ -331,7 +331,7 @@ private:
                                                         FaceOrientationMap face_orientation_map,
                                                         const NamedParameters& np)
   {
-    validate_quad_mesh(pm, np);
+    validate_panel_mesh(pm, np);
     return internal::read_face_clustering(pm, CGAL::get_initialized_face_index_map(pm, np), face_cluster_map,
                                           face_orientation_map, number_of_clusters);
   }

@@ -9,7 +9,7 @@
 /// stage, the tile catalog and every K tried. Apart from the one-call function
 /// so that writers of reports (`IO/report.h`) need not include the pipeline.
 
-#include <CGAL/Tilable_surfaces/cluster_quads.h>
+#include <CGAL/Tilable_surfaces/cluster_panels.h>
 #include <CGAL/Tilable_surfaces/measure.h>
 #include <CGAL/Tilable_surfaces/optimize_tilable_surface.h>
 

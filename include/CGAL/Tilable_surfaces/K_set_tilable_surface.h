@@ -10,7 +10,7 @@
 
 #include <CGAL/Tilable_surfaces/Edge_sharing_graph.h>
 #include <CGAL/Tilable_surfaces/cluster_editing.h>
-#include <CGAL/Tilable_surfaces/cluster_quads.h>
+#include <CGAL/Tilable_surfaces/cluster_panels.h>
 #include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/exceptions.h>
 #include <CGAL/Tilable_surfaces/measure.h>
@@ -96,7 +96,7 @@ public:
   /// \name Construction
   /// @{
 
-  /// Checks `pm` (`validate_quad_mesh()`) and keeps the points of `vpm` as
+  /// Checks `pm` (`validate_panel_mesh()`) and keeps the points of `vpm` as
   /// the input.
   /// \throws Invalid_input if `pm` is not a valid quad mesh.
   K_set_tilable_surface(PolygonMesh& pm, VertexPointMap vpm)
@@ -113,7 +113,7 @@ public:
   /// The four stages of `cluster()` may also be run one by one.
   /// @{
 
-  /// Clusters the faces into `number_of_tiles` S-quads as `cluster_quads()`
+  /// Clusters the faces into `number_of_tiles` S-quads as `cluster_panels()`
   /// does (whose named parameters `np` takes, except the two maps: the
   /// object's own are used), from the input quads: the four stages below in
   /// turn, each reported to the visitor's `phase()`. The previous clustering
@@ -246,7 +246,7 @@ public:
 
   /// Makes candidate `i` of the pool of the last `cluster()`
   /// (`clustering().candidates`) the current clustering, with S-quads and
-  /// flexible orientations computed as `cluster_quads()` does for the one it
+  /// flexible orientations computed as `cluster_panels()` does for the one it
   /// returns, from the input quads. Returns its degree of flexibility.
   std::size_t use_candidate(std::size_t i)
   {

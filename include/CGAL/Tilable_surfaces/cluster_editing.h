@@ -7,7 +7,7 @@
 /// \file cluster_editing.h
 /// Interactive editing of a clustering (paper §5): merge two clusters, split
 /// one in two, re-tag the orientations. Each function reads and rewrites the
-/// `face_cluster_map` and `face_orientation_map` filled by `cluster_quads()`
+/// `face_cluster_map` and `face_orientation_map` filled by `cluster_panels()`
 /// (or by the user), keeps the cluster ids contiguous and returns the new
 /// degree of flexibility.
 ///
@@ -16,7 +16,7 @@
 /// `PROPER_RIGID_MOTIONS`), `vertex_point_map`, `face_index_map`.
 /// The number of clusters K is the largest id in `face_cluster_map` plus one.
 
-#include <CGAL/Tilable_surfaces/cluster_quads.h>
+#include <CGAL/Tilable_surfaces/cluster_panels.h>
 #include <CGAL/Tilable_surfaces/internal/canonical_face_order.h>
 
 #include <string>
@@ -41,7 +41,7 @@ Orientation_policy orientation_policy(const NP& np)
 
 // Merges cluster max(a, b) into min(a, b); returns the correspondence between
 // their S-quads, which the edge-sharing graph needs.
-inline Quad_orientation merge_clusters(Face_clustering& fc, const std::vector<Panel>& quads, std::size_t a,
+inline Panel_orientation merge_clusters(Face_clustering& fc, const std::vector<Panel>& quads, std::size_t a,
                                        std::size_t b, Orientation_policy policy)
 {
   fc.check_cluster(a);
@@ -57,11 +57,11 @@ inline Quad_orientation merge_clusters(Face_clustering& fc, const std::vector<Pa
                         std::to_string(kept) + ": a quad cluster and a triangle cluster",
                         Invalid_input::PARAMETER);
   auto s_quad = [&](std::size_t c) {
-    std::vector<Quad_orientation> o;
+    std::vector<Panel_orientation> o;
     for(std::size_t f : members[c]) o.push_back(fc.orientation[f]);
     return procrustes_mean(quads, members[c], policy, &o);
   };
-  const Quad_orientation correspondence = fast_best_match(s_quad(kept), s_quad(removed), policy).orientation;
+  const Panel_orientation correspondence = fast_best_match(s_quad(kept), s_quad(removed), policy).orientation;
   for(std::size_t f : members[removed])
   {
     fc.orientation[f] = compose(fc.orientation[f], correspondence, n);
@@ -128,7 +128,7 @@ struct Editable_clustering
   {
     namespace TS_np = CGAL::Tilable_surfaces::internal_np;
     require_face_maps<NP>();
-    validate_quad_mesh(pm, np);
+    validate_panel_mesh(pm, np);
     const Original_face_index_map original_index = CGAL::get_initialized_face_index_map(pm, np);
     const Face_clustering read =
       read_face_clustering(pm, original_index, parameters::get_parameter(np, TS_np::face_cluster),
@@ -175,7 +175,7 @@ std::size_t merge_clusters(const PolygonMesh& pm, std::size_t a, std::size_t b,
 {
   internal::Editable_clustering<PolygonMesh, CGAL_NP_CLASS> e(pm, np);
   Edge_sharing_graph<PolygonMesh> graph(internal::Validated_mesh(true), pm, e.fim, e.vpm, e.fc);
-  const Quad_orientation correspondence =
+  const Panel_orientation correspondence =
     internal::merge_clusters(e.fc, e.faces.quads, a, b, internal::orientation_policy(np));
   const std::size_t dof = graph.merge_clusters((std::min)(a, b), (std::max)(a, b), correspondence);
   e.write(pm, np);
@@ -186,7 +186,7 @@ std::size_t merge_clusters(const PolygonMesh& pm, std::size_t a, std::size_t b,
 /// Splits cluster `c` in two: 2-means on the quad descriptors, then exact
 /// refinement (each quad goes to the nearer of the two S-quads, twice); quads
 /// with equal descriptors are cut in two halves in the canonical face order
-/// (`cluster_quads()`).
+/// (`cluster_panels()`).
 ///
 /// The part with the first face of `c` (in that order) keeps the id `c`, the other part gets
 /// the id K. The faces of both parts are re-tagged with the orientation that
@@ -210,7 +210,7 @@ std::size_t split_cluster(const PolygonMesh& pm, std::size_t c, const CGAL_NP_CL
 /// \ingroup PkgTilableSurfacesRef
 /// Recomputes the S-quad of every cluster (Procrustes mean) and re-tags every
 /// face with an admissible orientation chosen for flexibility, as
-/// `cluster_quads()` does at its end (tau from `similarity_threshold`,
+/// `cluster_panels()` does at its end (tau from `similarity_threshold`,
 /// default 0.01, times the mean edge length); the ids do not change. Returns
 /// the degree of flexibility of the rebuilt edge-sharing graph.
 ///

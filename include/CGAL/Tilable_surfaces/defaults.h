@@ -31,7 +31,7 @@ enum Orientation_policy
 };
 
 /// \ingroup PkgTilableSurfacesRef
-/// How `cluster_quads()` evaluates the weights of clusters.
+/// How `cluster_panels()` evaluates the weights of clusters.
 enum Clustering_path
 {
   /// `EXACT_PATH` for meshes with at most `exact_clustering_limit` faces,

@@ -20,12 +20,12 @@ namespace Tilable_surfaces {
 
 /// \ingroup PkgTilableSurfacesRef
 /// Turns the quad mesh `pm` into a K-set tilable surface: checks it, clusters
-/// its faces into K S-quads (`cluster_quads()`), moves its vertices so that
+/// its faces into K S-quads (`cluster_panels()`), moves its vertices so that
 /// every face is congruent to its S-quad while the surface stays as close to
 /// the input as it can (`optimize_tilable_surface()`), and measures the
 /// result against the input (`measure_tilability()`).
 ///
-/// Every named parameter of `cluster_quads()` and of
+/// Every named parameter of `cluster_panels()` and of
 /// `optimize_tilable_surface()` is accepted and passed on; the two maps are
 /// outputs here. Whether the result is exactly tilable is measured, not
 /// assumed: see `K_set_tilable_result::is_tilable()`.
@@ -54,7 +54,7 @@ namespace Tilable_surfaces {
 ///   \cgalParamNBegin{vertex_point_map} the points of `pm`; moved. \cgalParamNEnd
 ///   \cgalParamNBegin{visitor} a `Default_visitor` (or a class with its
 ///     interface), by value or as `std::ref`: every stage calls the same object. \cgalParamNEnd
-///   \cgalParamNBegin{...} the parameters of `cluster_quads()` and
+///   \cgalParamNBegin{...} the parameters of `cluster_panels()` and
 ///     `optimize_tilable_surface()`. \cgalParamNEnd
 /// \cgalNamedParamsEnd
 ///

@@ -238,7 +238,7 @@ inline Tilability_measure measure_tilability(const Tilable_problem& problem,
   return m;
 }
 
-// measure_tilability() on meshes validate_quad_mesh() accepted, with the
+// measure_tilability() on meshes validate_panel_mesh() accepted, with the
 // same numbers of vertices and faces.
 template <typename PolygonMesh, typename NamedParameters, typename InputNamedParameters>
 Tilability_measure measure_tilability(Validated_mesh, const PolygonMesh& result, const PolygonMesh& input,
@@ -265,7 +265,7 @@ Tilability_measure measure_tilability(Validated_mesh, const PolygonMesh& result,
 ///   \cgalParamNBegin{face_cluster_map} (required) cluster of every face of
 ///     `result`, in 0..K-1 \cgalParamNEnd
 ///   \cgalParamNBegin{face_orientation_map} (required) orientation (0..7 or
-///     `Quad_orientation`) of every face's S-quad instance \cgalParamNEnd
+///     `Panel_orientation`) of every face's S-quad instance \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_point_map} points of `result` \cgalParamNEnd
 ///   \cgalParamNBegin{vertex_index_map} indices pairing the vertices of the
 ///     two meshes \cgalParamNEnd
@@ -289,8 +289,8 @@ template <typename PolygonMesh, typename NamedParameters, typename InputNamedPar
 Tilability_measure measure_tilability(const PolygonMesh& result, const PolygonMesh& input,
                                       const NamedParameters& np, const InputNamedParameters& np_input)
 {
-  validate_quad_mesh(result, np);
-  validate_quad_mesh(input, np_input);
+  validate_panel_mesh(result, np);
+  validate_panel_mesh(input, np_input);
   if(num_vertices(result) != num_vertices(input) || num_faces(result) != num_faces(input))
     throw Invalid_input("the result and the input do not have the same numbers of vertices and faces");
   return internal::measure_tilability(internal::Validated_mesh(true), result, input, np, np_input);

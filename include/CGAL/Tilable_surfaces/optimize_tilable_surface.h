@@ -265,7 +265,7 @@ void write_moved_points(PolygonMesh& pm, const NamedParameters& np, const Optimi
   }
 }
 
-// optimize_tilable_surface() on a mesh validate_quad_mesh() accepted. With
+// optimize_tilable_surface() on a mesh validate_panel_mesh() accepted. With
 // `start` (positions by vertex index, in mesh units) at which the clustering
 // is exact, the default solver starts there instead of at the input, and the
 // start is the result unless the solve's result is better by is_better():
@@ -325,7 +325,7 @@ Optimization_result optimize_tilable_surface(Validated_mesh, PolygonMesh& pm, co
 /// `orientation_policy` `ALLOW_MIRRORED_PANELS`), within
 /// `congruence_tolerance` (user manual, section Definitions).
 ///
-/// The input is checked first (`validate_quad_mesh()`, cluster ids and
+/// The input is checked first (`validate_panel_mesh()`, cluster ids and
 /// orientations) and nothing is modified when it is refused. The solvers work
 /// on a copy of the points centred and scaled to a unit bounding-box
 /// diagonal, so the result commutes with similarities of the input and every
@@ -340,7 +340,7 @@ Optimization_result optimize_tilable_surface(Validated_mesh, PolygonMesh& pm, co
 ///   \cgalParamNBegin{face_cluster_map} (required) cluster of every face,
 ///     0..K-1; K = 1 + the largest id \cgalParamNEnd
 ///   \cgalParamNBegin{face_orientation_map} (required) orientation of every
-///     face's instance, 0..7 or `Quad_orientation` (see `quad_shape.h`) \cgalParamNEnd
+///     face's instance, 0..7 or `Panel_orientation` (see `quad_shape.h`) \cgalParamNEnd
 ///   \cgalParamNBegin{orientation_policy} with `ALLOW_MIRRORED_PANELS`, an
 ///     instance may be the mirror image of its S-quad: the signed volumes are
 ///     then left free, since the edges and diagonals alone fix a quad up to a
@@ -386,7 +386,7 @@ Optimization_result optimize_tilable_surface(Validated_mesh, PolygonMesh& pm, co
 template <class PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 Optimization_result optimize_tilable_surface(PolygonMesh& pm, const CGAL_NP_CLASS& np)
 {
-  validate_quad_mesh(pm, np);
+  validate_panel_mesh(pm, np);
   return internal::optimize_tilable_surface(internal::Validated_mesh(true), pm, np);
 }
 
@@ -408,7 +408,7 @@ struct Displacement_prediction
 
 namespace internal {
 
-// predict_displacement() on a mesh validate_quad_mesh() accepted.
+// predict_displacement() on a mesh validate_panel_mesh() accepted.
 template <class PolygonMesh, typename NamedParameters>
 Displacement_prediction predict_displacement(Validated_mesh, const PolygonMesh& pm, const NamedParameters& np)
 {
@@ -438,7 +438,7 @@ Displacement_prediction predict_displacement(Validated_mesh, const PolygonMesh& 
 template <class PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 Displacement_prediction predict_displacement(const PolygonMesh& pm, const CGAL_NP_CLASS& np)
 {
-  validate_quad_mesh(pm, np);
+  validate_panel_mesh(pm, np);
   return internal::predict_displacement(internal::Validated_mesh(true), pm, np);
 }
 

@@ -138,15 +138,15 @@ private:
 /// for `o >= 4` (reversed: the panel is turned over). A quad has the 8
 /// correspondences 0..7, a triangle the 6 correspondences 0, 1, 2, 4, 5, 6
 /// (`is_valid_for()`). Every member takes the number of corners `n`, 4 by default.
-class Quad_orientation
+class Panel_orientation
 {
 public:
   /// The identity correspondence (o = 0).
-  Quad_orientation() : m_index(0) {}
+  Panel_orientation() : m_index(0) {}
 
   /// The correspondence number `index`, in 0..7.
   /// \throws Invalid_input if `index` is out of range.
-  explicit Quad_orientation(int index) : m_index(static_cast<unsigned char>(index))
+  explicit Panel_orientation(int index) : m_index(static_cast<unsigned char>(index))
   {
     if(index < 0 || index > 7)
       throw Invalid_input("quad orientation " + std::to_string(index) + " is not in 0..7",
@@ -172,9 +172,9 @@ public:
   }
 
   /// The correspondence that undoes this one: `inverse(n)((*this)(i, n), n) == i`.
-  Quad_orientation inverse(int n = 4) const
+  Panel_orientation inverse(int n = 4) const
   {
-    return m_index < 4 ? Quad_orientation(modulo(n - m_index, n)) : *this;
+    return m_index < 4 ? Panel_orientation(modulo(n - m_index, n)) : *this;
   }
 
 
@@ -192,10 +192,10 @@ public:
   }
 
   /// Equality of correspondences.
-  friend bool operator==(const Quad_orientation& a, const Quad_orientation& b)
+  friend bool operator==(const Panel_orientation& a, const Panel_orientation& b)
   { return a.m_index == b.m_index; }
   /// Inequality of correspondences.
-  friend bool operator!=(const Quad_orientation& a, const Quad_orientation& b)
+  friend bool operator!=(const Panel_orientation& a, const Panel_orientation& b)
   { return a.m_index != b.m_index; }
 
 private:
@@ -209,17 +209,17 @@ private:
 /// \ingroup PkgTilableSurfacesRef
 /// The composition of two correspondences between panels of `n` corners:
 /// `compose(a, b, n)(i, n) == a(b(i, n), n)`.
-inline Quad_orientation compose(const Quad_orientation& a, const Quad_orientation& b, int n = 4)
+inline Panel_orientation compose(const Panel_orientation& a, const Panel_orientation& b, int n = 4)
 {
   // Both maps are determined by the image of 0 and the direction.
   const int image_of_zero = a(b(0, n), n);
   const bool reversed = a.is_reversed() != b.is_reversed();
-  return Quad_orientation(reversed ? 4 + image_of_zero : image_of_zero);
+  return Panel_orientation(reversed ? 4 + image_of_zero : image_of_zero);
 }
 
 /// \ingroup PkgTilableSurfacesRef
 /// The composition of two quad correspondences, `compose(a, b, 4)`.
-inline Quad_orientation operator*(const Quad_orientation& a, const Quad_orientation& b)
+inline Panel_orientation operator*(const Panel_orientation& a, const Panel_orientation& b)
 {
   return compose(a, b, 4);
 }
@@ -227,7 +227,7 @@ inline Quad_orientation operator*(const Quad_orientation& a, const Quad_orientat
 /// \ingroup PkgTilableSurfacesRef
 /// Returns the panel `r` with `r[i] = q[o(i)]`: the corners of `q` listed in
 /// the labelling of a template matched to `q` with orientation `o`.
-inline Panel reoriented(const Panel& q, Quad_orientation o)
+inline Panel reoriented(const Panel& q, Panel_orientation o)
 {
   if(q.is_triangle())
     return Panel(q[o(0, 3)], q[o(1, 3)], q[o(2, 3)]);
@@ -406,9 +406,9 @@ inline double rigid_fit_deviation(const Panel& source, const Panel& target, bool
 
 /// \ingroup PkgTilableSurfacesRef
 /// Whether correspondence `o` may match panels of `n` corners under `policy`:
-/// one of their correspondences (`Quad_orientation::is_valid_for()`), and not
+/// one of their correspondences (`Panel_orientation::is_valid_for()`), and not
 /// reversed under `NO_TURNED_OVER_PANELS`.
-inline bool is_admissible(Quad_orientation o, int n, Orientation_policy policy)
+inline bool is_admissible(Panel_orientation o, int n, Orientation_policy policy)
 {
   return o.is_valid_for(n) && !(policy == NO_TURNED_OVER_PANELS && o.is_reversed());
 }
@@ -421,7 +421,7 @@ inline bool is_admissible(Quad_orientation o, int n, Orientation_policy policy)
 struct Quad_match
 {
   double dissimilarity = std::numeric_limits<double>::infinity();  ///< s(p, q)
-  Quad_orientation orientation;  ///< the correspondence that achieves it
+  Panel_orientation orientation;  ///< the correspondence that achieves it
   Rigid_fit fit;                 ///< the motion of p onto q relabelled by `orientation`
 };
 
@@ -441,7 +441,7 @@ inline Quad_match best_match(const Panel& p, const Panel& q,
     return best;
   for(int o = 0; o < 8; ++o)
   {
-    const Quad_orientation orientation(o);
+    const Panel_orientation orientation(o);
     if(!is_admissible(orientation, q.size(), policy))
       continue;
     const Panel target = reoriented(q, orientation);
@@ -489,7 +489,7 @@ double congruence_error(const QuadRange& instances, const Panel& s_quad,
 /// is face edge j, from the face's vertex v_j to v_{j+1} (the vertices as
 /// `face_panel()` lists them), that is next^(j+1)(halfedge(f, pm)), since
 /// `vertices_around_face()` starts at the target of `halfedge(f, pm)`.
-/// `Quad_orientation::face_edge()` and the edge-sharing graph number a face's
+/// `Panel_orientation::face_edge()` and the edge-sharing graph number a face's
 /// edges this way. Faces of more than 4 edges give their first 4. The result
 /// has `size()`, `operator[]` and `begin()` / `end()`.
 template <typename PolygonMesh>
@@ -535,7 +535,7 @@ auto const_vertex_point_map(const PolygonMesh& pm, const NamedParameters& np)
 template <typename PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 Panel face_panel(typename boost::graph_traits<PolygonMesh>::face_descriptor f,
                  const PolygonMesh& pm,
-                 Quad_orientation o = Quad_orientation(),
+                 Panel_orientation o = Panel_orientation(),
                  const CGAL_NP_CLASS& np = parameters::default_values())
 {
   const auto vpm = internal::const_vertex_point_map(pm, np);
@@ -574,6 +574,12 @@ double mean_edge_length(const PolygonMesh& pm,
   }
   return count == 0 ? 0.0 : sum / double(count);
 }
+
+#ifndef CGAL_NO_DEPRECATED_CODE
+/// \ingroup PkgTilableSurfacesRef
+/// \deprecated The name of `Panel_orientation` until 1.0.0.
+using Quad_orientation CGAL_DEPRECATED_MSG("use Panel_orientation") = Panel_orientation;
+#endif
 
 } // namespace Tilable_surfaces
 } // namespace CGAL

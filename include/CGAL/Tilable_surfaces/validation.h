@@ -32,7 +32,7 @@ namespace Tilable_surfaces {
 
 namespace internal {
 
-// Tag of the internal entry points that skip validate_quad_mesh(): the mesh
+// Tag of the internal entry points that skip validate_panel_mesh(): the mesh
 // passed with it was accepted by it (the public functions check first, the
 // stateful K_set_tilable_surface once, in its constructor).
 struct Validated_mesh
@@ -180,7 +180,7 @@ bool is_isolated(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v,
   return halfedge(v, pm) == boost::graph_traits<PolygonMesh>::null_halfedge();
 }
 
-// The number of corners of face `f` of a mesh validate_quad_mesh() accepted: 3 or 4.
+// The number of corners of face `f` of a mesh validate_panel_mesh() accepted: 3 or 4.
 template <typename PolygonMesh>
 int face_corner_count(typename boost::graph_traits<PolygonMesh>::face_descriptor f, const PolygonMesh& pm)
 {
@@ -202,7 +202,7 @@ inline void check_face_label(std::size_t fi, long long c, long long o, std::size
   if(o < 0 || o > 7)
     throw Invalid_input("face " + std::to_string(fi) + " has orientation " + std::to_string(o) +
                         ", not in 0..7", Invalid_input::FACE, fi);
-  if(!Quad_orientation(int(o)).is_valid_for(corners))
+  if(!Panel_orientation(int(o)).is_valid_for(corners))
     throw Invalid_input("face " + std::to_string(fi) + " is a triangle and has orientation " +
                         std::to_string(o) + ", not one of a triangle's (0, 1, 2, 4, 5, 6)",
                         Invalid_input::FACE, fi);
@@ -301,7 +301,7 @@ void check_face(typename boost::graph_traits<PolygonMesh>::face_descriptor f, co
       if(ids[i] == ids[j])
         fail("uses vertex " + std::to_string(ids[i]) + " twice");
 
-  const Panel q = face_panel(f, pm, Quad_orientation(), np);
+  const Panel q = face_panel(f, pm, Panel_orientation(), np);
   for(std::size_t k = 0; k < n; ++k)
     if(!((q[int((k + 1) % n)] - q[int(k)]).norm() > min_length))
       fail("has a zero-length edge between vertices " + std::to_string(ids[k]) +
@@ -358,7 +358,7 @@ std::size_t number_of_isolated_vertices(const PolygonMesh& pm)
 /// \throws Invalid_input naming the first offending vertex or face (in the
 /// order of `vertices(pm)` and `faces(pm)`) and the problem. Never modifies `pm`.
 template <typename PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
-void validate_quad_mesh(const PolygonMesh& pm,
+void validate_panel_mesh(const PolygonMesh& pm,
                         const CGAL_NP_CLASS& np = parameters::default_values())
 {
   if(faces(pm).empty())
@@ -379,6 +379,17 @@ void validate_quad_mesh(const PolygonMesh& pm,
   for(auto f : faces(pm))
     internal::check_face(f, pm, np, get(fim, f), vim, min_length, min_area);
 }
+
+#ifndef CGAL_NO_DEPRECATED_CODE
+/// \ingroup PkgTilableSurfacesRef
+/// \deprecated The name of `validate_panel_mesh()` until 1.0.0.
+template <typename PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
+CGAL_DEPRECATED_MSG("use validate_panel_mesh()")
+void validate_quad_mesh(const PolygonMesh& pm, const CGAL_NP_CLASS& np = parameters::default_values())
+{
+  validate_panel_mesh(pm, np);
+}
+#endif
 
 } // namespace Tilable_surfaces
 } // namespace CGAL

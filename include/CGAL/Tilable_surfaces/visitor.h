@@ -41,7 +41,7 @@ struct Default_visitor
   }
 
   /// Called when a phase ends, with its duration in seconds:
-  /// `cluster_quads()`: "threshold clustering", "merges", "other candidates",
+  /// `cluster_panels()`: "threshold clustering", "merges", "other candidates",
   /// "orientations";
   /// `K_set_tilable_surface::optimize_closest()`: "sweep candidate",
   /// "displacement prediction", "candidate optimization", "improvement round"

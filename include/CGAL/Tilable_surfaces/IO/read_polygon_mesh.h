@@ -38,7 +38,7 @@ namespace Tilable_surfaces {
 namespace IO {
 
 /// \ingroup PkgTilableSurfacesRef
-/// What `read_quad_mesh()` read, and what the caller should know about it.
+/// What `read_panel_mesh()` read, and what the caller should know about it.
 struct Read_report
 {
   /// The number of vertices of the file used by no face. They are kept, at
@@ -456,7 +456,7 @@ inline std::string lower_extension(const std::string& path)
 /// - a soup that is not a manifold, consistently oriented polygon mesh is
 ///   refused (nothing is repaired).
 ///
-/// The mesh is not checked further: `validate_quad_mesh()` does that (every
+/// The mesh is not checked further: `validate_panel_mesh()` does that (every
 /// entry point of the package calls it).
 ///
 /// \tparam PolygonMesh a model of `MutableFaceGraph` whose points are 3D
@@ -464,7 +464,7 @@ inline std::string lower_extension(const std::string& path)
 /// \returns what was read that the caller should know.
 /// \throws Invalid_input saying what is wrong with the data; `pm` is empty then.
 template <typename PolygonMesh>
-Read_report read_quad_mesh(std::istream& in, const std::string& format, PolygonMesh& pm,
+Read_report read_panel_mesh(std::istream& in, const std::string& format, PolygonMesh& pm,
                            const std::string& name = "the input")
 {
   typedef CGAL::Simple_cartesian<double>::Point_3 Point;
@@ -500,14 +500,35 @@ Read_report read_quad_mesh(std::istream& in, const std::string& format, PolygonM
 /// extension (.off, .obj or .ply, in any case).
 /// \throws Invalid_input if the file cannot be opened, or as the function above.
 template <typename PolygonMesh>
-Read_report read_quad_mesh(const std::string& path, PolygonMesh& pm)
+Read_report read_panel_mesh(const std::string& path, PolygonMesh& pm)
 {
   CGAL::clear(pm);
   std::ifstream in(path, std::ios::binary);
   if(!in)
     throw Invalid_input("cannot open '" + path + "': no such file or not readable");
-  return read_quad_mesh(in, internal::lower_extension(path), pm, path);
+  return read_panel_mesh(in, internal::lower_extension(path), pm, path);
 }
+
+#ifndef CGAL_NO_DEPRECATED_CODE
+/// \ingroup PkgTilableSurfacesRef
+/// \deprecated The name of `read_panel_mesh()` until 1.0.0.
+template <typename PolygonMesh>
+CGAL_DEPRECATED_MSG("use read_panel_mesh()")
+Read_report read_quad_mesh(const std::string& path, PolygonMesh& pm)
+{
+  return read_panel_mesh(path, pm);
+}
+
+/// \ingroup PkgTilableSurfacesRef
+/// \deprecated The name of `read_panel_mesh()` until 1.0.0.
+template <typename PolygonMesh>
+CGAL_DEPRECATED_MSG("use read_panel_mesh()")
+Read_report read_quad_mesh(std::istream& in, const std::string& format, PolygonMesh& pm,
+                           const std::string& name = "the input")
+{
+  return read_panel_mesh(in, format, pm, name);
+}
+#endif
 
 } // namespace IO
 } // namespace Tilable_surfaces

@@ -103,7 +103,7 @@ void add_face_properties(Output_mesh& out, const FacePairs& face_pairs, ClusterM
 ///   \cgalParamNBegin{stream_precision} digits of ASCII coordinates (default 17) \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// \returns whether the stream is good after writing.
-/// \throws Invalid_input if `pm` fails `validate_quad_mesh()` or a face has
+/// \throws Invalid_input if `pm` fails `validate_panel_mesh()` or a face has
 /// a negative cluster or an orientation that is not one of its own; nothing
 /// is written then.
 template <typename PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
@@ -122,7 +122,7 @@ bool write_tiled_PLY(std::ostream& os, const PolygonMesh& pm,
     choose_parameter(get_parameter(np, CGAL::internal_np::stream_precision), defaults::stream_precision);
   const auto vpm = Tilable_surfaces::internal::const_vertex_point_map(pm, np);
 
-  validate_quad_mesh(pm, np);
+  validate_panel_mesh(pm, np);
   Tilable_surfaces::internal::check_face_labels(pm, CGAL::get_initialized_face_index_map(pm, np),
                                                 clusters, orientations);
 

@@ -42,7 +42,7 @@ namespace IO {
 ///   \cgalParamNBegin{use_binary_mode} binary if `true` (default) \cgalParamNEnd
 /// \cgalNamedParamsEnd
 /// \returns whether the stream is good after writing.
-/// \throws Invalid_input if `pm` fails `validate_quad_mesh()`; nothing is
+/// \throws Invalid_input if `pm` fails `validate_panel_mesh()`; nothing is
 /// written then.
 template <typename PolygonMesh, typename EdgeComponentMap, typename CGAL_NP_TEMPLATE_PARAMETERS>
 bool write_edge_components_PLY(std::ostream& os, const PolygonMesh& pm,
@@ -56,7 +56,7 @@ bool write_edge_components_PLY(std::ostream& os, const PolygonMesh& pm,
   const auto vpm = Tilable_surfaces::internal::const_vertex_point_map(pm, np);
   const bool binary =
     choose_parameter(get_parameter(np, CGAL::internal_np::use_binary_mode), defaults::use_binary_mode);
-  validate_quad_mesh(pm, np);
+  validate_panel_mesh(pm, np);
 
   std::size_t number_of_components = 0;
   for(auto e : edges(pm))

@@ -38,7 +38,7 @@ cluster_members(const std::vector<std::size_t>& label, std::size_t k)
 struct Face_clustering
 {
   std::vector<std::size_t> label;
-  std::vector<Quad_orientation> orientation;
+  std::vector<Panel_orientation> orientation;
   std::size_t number_of_clusters = 0;
 
   std::vector<std::size_t> cluster_sizes() const
@@ -130,7 +130,7 @@ Face_clustering read_face_clustering(const PolygonMesh& pm, FaceIndexMap fim, Cl
     const long long o = static_cast<long long>(static_cast<int>(get(orientation_map, f)));
     check_face_label(i, c, o, number_of_clusters, face_corner_count(f, pm));
     fc.label[i] = std::size_t(c);
-    fc.orientation[i] = Quad_orientation(int(o));
+    fc.orientation[i] = Panel_orientation(int(o));
     largest = (std::max)(largest, std::size_t(c));
   }
   fc.number_of_clusters = number_of_clusters != unknown_number_of_clusters

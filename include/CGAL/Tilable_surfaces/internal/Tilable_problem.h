@@ -124,7 +124,7 @@ void add_faces_and_edge_groups(const PolygonMesh& pm, const VertexIndexMap& vim,
     int n = 0;
     for(auto v : CGAL::vertices_around_face(halfedge(face_of[i], pm), pm))
       face_order[std::size_t(n++)] = int(get(vim, v));
-    const Quad_orientation o = clustering.orientation[i];
+    const Panel_orientation o = clustering.orientation[i];
     std::array<int, 4> corners{{-1, -1, -1, -1}};
     for(int k = 0; k < n; ++k)
       corners[std::size_t(k)] = face_order[std::size_t(o(k, n))];
@@ -184,7 +184,7 @@ inline void add_cluster_groups(Tilable_problem& problem)
 // The clustering of `pm` read from the named parameters `face_cluster_map`
 // and `face_orientation_map` (both required), with K = 1 + the largest id.
 // Throws Invalid_input for ids or orientations out of range; the mesh itself
-// is checked by validate_quad_mesh() beforehand.
+// is checked by validate_panel_mesh() beforehand.
 template <typename PolygonMesh, typename NamedParameters>
 Tilable_problem make_tilable_problem(const PolygonMesh& pm, const NamedParameters& np)
 {

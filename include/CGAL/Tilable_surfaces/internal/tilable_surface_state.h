@@ -12,7 +12,7 @@
 
 #include <CGAL/Tilable_surfaces/Edge_sharing_graph.h>
 #include <CGAL/Tilable_surfaces/cluster_editing.h>
-#include <CGAL/Tilable_surfaces/cluster_quads.h>
+#include <CGAL/Tilable_surfaces/cluster_panels.h>
 #include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/exceptions.h>
 #include <CGAL/Tilable_surfaces/optimize_tilable_surface.h>
@@ -43,7 +43,7 @@ template <typename PolygonMesh, typename VertexPointMap>
 struct Tilable_surface_state
 {
   typedef typename CGAL::GetInitializedFaceIndexMap<PolygonMesh>::const_type Original_face_index_map;
-  // The steps index the faces in the canonical order (cluster_quads(), "Canonical face order").
+  // The steps index the faces in the canonical order (cluster_panels(), "Canonical face order").
   typedef Canonical_face_index_map<Original_face_index_map> Face_index_map;
   typedef typename CGAL::GetInitializedVertexIndexMap<PolygonMesh>::const_type Vertex_index_map;
   typedef typename boost::property_traits<VertexPointMap>::value_type Point;
@@ -52,7 +52,7 @@ struct Tilable_surface_state
     Input_point_map;
   typedef boost::iterator_property_map<std::vector<int>::iterator, Face_index_map, int, int&> Face_int_map;
   typedef internal::Solution<PolygonMesh, Point> Solution;
-  typedef Quad_clusterer<PolygonMesh, Original_face_index_map, Input_point_map> Clusterer;
+  typedef Panel_clusterer<PolygonMesh, Original_face_index_map, Input_point_map> Clusterer;
 
   // The input.
   PolygonMesh& mesh;  // whose vertices only the optimizing steps move
@@ -76,17 +76,17 @@ struct Tilable_surface_state
   Optimization_result optimization;  // of the last solve
   std::unique_ptr<Clusterer> clusterer;  // between initialize_clusters() and select_candidate()
 
-  // Checks `pm` (validate_quad_mesh()) and keeps the points of `point_map`
+  // Checks `pm` (validate_panel_mesh()) and keeps the points of `point_map`
   // as the input.
   Tilable_surface_state(PolygonMesh& pm, VertexPointMap point_map)
     : mesh(pm), vpm(point_map), vim(CGAL::get_initialized_vertex_index_map(pm)), cluster_ids(num_faces(pm), 0),
       orientation_ids(num_faces(pm), 0)
   {
     model.label.assign(num_faces(pm), 0);
-    model.orientation.assign(num_faces(pm), Quad_orientation());
+    model.orientation.assign(num_faces(pm), Panel_orientation());
     const auto original_index = CGAL::get_initialized_face_index_map(pm);
     const auto np = parameters::vertex_point_map(vpm).face_index_map(original_index);
-    validate_quad_mesh(pm, np);
+    validate_panel_mesh(pm, np);
     input_points.resize(num_vertices(pm));
     for(auto v : vertices(pm))
       input_points[get(vim, v)] = get(vpm, v);
@@ -211,7 +211,7 @@ struct Tilable_surface_state
   // it: a union-find cannot undo a union.
   void merge_clusters(std::size_t a, std::size_t b)
   {
-    const Quad_orientation correspondence = internal::merge_clusters(model, input_faces.quads, a, b, policy);
+    const Panel_orientation correspondence = internal::merge_clusters(model, input_faces.quads, a, b, policy);
     graph->merge_clusters((std::min)(a, b), (std::max)(a, b), correspondence);
     graph->compact_cluster_ids();
     publish_model();

@@ -194,7 +194,7 @@ private:
   {
     double score;
     std::size_t parent, kept, removed;
-    Quad_orientation correspondence;
+    Panel_orientation correspondence;
     double cost;
     std::uint64_t hash;
     bool operator<(const Proposal& o) const
@@ -274,7 +274,7 @@ private:
   }
 
   // Template corner i of group a's S-quad <-> corner correspondence(i) of b's.
-  Quad_orientation correspondence(std::size_t a, std::size_t b) const
+  Panel_orientation correspondence(std::size_t a, std::size_t b) const
   {
     const bool swapped = b < a;
     const std::pair<std::size_t, std::size_t> key = swapped ? std::make_pair(b, a)
@@ -294,7 +294,7 @@ private:
     std::vector<std::pair<std::size_t, std::size_t> > missing;
     for(const auto& p : pairs)
       if(!m_correspondences.count(pair_key(p))) missing.push_back(p);
-    std::vector<Quad_orientation> found(missing.size());
+    std::vector<Panel_orientation> found(missing.size());
     parallel_for(missing.size(), [&](std::size_t i) {
       found[i] = fast_best_match(m_leaders[missing[i].first], m_leaders[missing[i].second],
                                  m_policy).orientation;
@@ -305,7 +305,7 @@ private:
 
   // Number of components joined by merging `removed` into `kept`.
   static std::size_t joined_components(const State& s, std::size_t kept, std::size_t removed,
-                                        Quad_orientation corr)
+                                        Panel_orientation corr)
   {
     const int n = s.graph.corner_count(kept);
     std::array<std::pair<std::size_t, std::size_t>, 4> links;
@@ -408,7 +408,7 @@ private:
       const double c = cost(s, a, b);
       if(score_lower_bound(s, c) > bound.value())
         continue;
-      const Quad_orientation corr = correspondence(a, b);
+      const Panel_orientation corr = correspondence(a, b);
       const int n = s.graph.corner_count(a);
       bool identical = true;
       for(int k = 0; k < n; ++k)
@@ -469,7 +469,7 @@ private:
   Configuration_score m_score;
   std::size_t m_width;
   bool m_auto_merge;
-  mutable std::unordered_map<std::uint64_t, Quad_orientation> m_correspondences;
+  mutable std::unordered_map<std::uint64_t, Panel_orientation> m_correspondences;
 };
 
 // The candidate generator of the last beam (CandidateGenerator, origin

@@ -50,7 +50,7 @@ struct Candidate_origin_traits
 {
   const char* name;               // as in the choice strings and reports: "hierarchical", "k-means",
                                   // "quad-strip", "grid-segment", "sweep"
-  bool selectable_by_score;       // may be cluster_quads()'s chosen candidate (false for sweeps)
+  bool selectable_by_score;       // may be cluster_panels()'s chosen candidate (false for sweeps)
   bool solved_first_from_start;   // the fidelity search solves it first, from the exact start its
                                   // generator made, and does not rank it (true for sweeps only)
   std::size_t extra_quota_divisor;// after the ranked candidates, ceil(optimized / divisor) more of this
@@ -60,7 +60,7 @@ struct Candidate_origin_traits
 // The traits of the candidates of `origin` (defined in candidate_generators.h).
 inline const Candidate_origin_traits& origin_traits(Candidate_origins::Origin origin);
 
-// What cluster_quads() reads from its named parameters, besides K and the maps.
+// What cluster_panels() reads from its named parameters, besides K and the maps.
 struct Clustering_settings
 {
   std::size_t width;          // number_of_candidates
@@ -88,7 +88,7 @@ struct Generated_candidate
   // The orientation of every face the DOF and length deviation are measured
   // with; empty: each face's best match on its cluster's S-quad
   // (cluster_shapes()).
-  std::vector<Quad_orientation> orientation;
+  std::vector<Panel_orientation> orientation;
   // Set by a generator that tracks the measures itself (the beam keeps an
   // edge-sharing graph and a weight per configuration): used as they are.
   bool measured = false;
@@ -106,7 +106,7 @@ struct Generated_candidate
 // (canonical_face_order.h); the random generator is shared, so the
 // generators draw in the order of the registration list. Members that only
 // the beam of merges reads (the threshold clustering and the score's
-// references) are set from the end of Quad_clusterer::initialize() on.
+// references) are set from the end of Panel_clusterer::initialize() on.
 template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
 struct Generator_context : Candidate_origins
 {

@@ -6,7 +6,7 @@
 
 // The registration of the candidate generators (models of CandidateGenerator,
 // candidate_generator.h): their origins, the traits of each origin, and the
-// lists Quad_clusterer runs. A new generator adds here its origin (if new)
+// lists Panel_clusterer runs. A new generator adds here its origin (if new)
 // with its traits row, its include, and its place in a list; its model lives
 // in its own header, and its documentation on the concept page and in the
 // user manual's table: three places in all.
@@ -23,7 +23,7 @@
 namespace CGAL {
 namespace Tilable_surfaces {
 
-/// Where a candidate of the pool of `cluster_quads()` comes from: the
+/// Where a candidate of the pool of `cluster_panels()` comes from: the
 /// generator that made it (user manual, section Candidate generators).
 /// `HIERARCHICAL`: the last beam of binary merges.
 /// `KMEANS`: k-means on the quad descriptors.
@@ -35,7 +35,7 @@ namespace Tilable_surfaces {
 /// `GRID_SWEEPS`: every column of a run of rows of a quad grid is one
 /// cluster; such a clustering is exact on a swept surface built directly
 /// (user manual, section TS_Sweeps). These are never the configuration
-/// `cluster_quads()` returns; `K_set_tilable_surface::optimize_closest()`
+/// `cluster_panels()` returns; `K_set_tilable_surface::optimize_closest()`
 /// solves them first, from that surface.
 enum Candidate_origins::Origin : int { HIERARCHICAL, KMEANS, QUAD_STRIPS, GRID_SEGMENTS, GRID_SWEEPS };
 
@@ -60,7 +60,7 @@ struct Generator_list
 {
 };
 
-// Step 2 of Quad_clusterer: the beam of merges down to K.
+// Step 2 of Panel_clusterer: the beam of merges down to K.
 typedef Generator_list<Hierarchical_generator> Merge_generators;
 
 // Step 3: the other candidates. Generators whose candidates are solved first

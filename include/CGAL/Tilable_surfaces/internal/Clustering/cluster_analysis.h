@@ -28,7 +28,7 @@ namespace internal {
 struct Cluster_shapes
 {
   std::vector<Panel> s_quads;                   // per cluster
-  std::vector<Quad_orientation> orientation;   // per face
+  std::vector<Panel_orientation> orientation;   // per face
   std::vector<double> distance;                // per face: s(S-quad, face)
   std::size_t degree_of_flexibility = 0;       // when known (finished_clustering())
 };
@@ -104,7 +104,7 @@ template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
 Edge_sharing_graph<PolygonMesh>
 edge_sharing_graph(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
                    const std::vector<std::size_t>& label,
-                   const std::vector<Quad_orientation>& orientation, std::size_t k)
+                   const std::vector<Panel_orientation>& orientation, std::size_t k)
 {
   return Edge_sharing_graph<PolygonMesh>(Validated_mesh(true), pm, fim, vpm,
                                          Face_clustering{label, orientation, k});

@@ -125,7 +125,7 @@ inline Eigen::Matrix3d optimal_rotation(const Eigen::Matrix3d& s, double upper_b
 // order of `o`; the same motion as `best_rigid_fit(p.corners, reoriented(q.corners, o))`.
 inline Rigid_fit fast_rigid_fit(const Prepared_quad& p, const Panel& p_centred,
                                 const Eigen::Vector3d& p_mean, const Prepared_quad& q,
-                                Quad_orientation o)
+                                Panel_orientation o)
 {
   const int n = p_centred.size();
   Eigen::Matrix3d s = Eigen::Matrix3d::Zero();
@@ -142,7 +142,7 @@ inline Rigid_fit fast_rigid_fit(const Prepared_quad& p, const Panel& p_centred,
 // `allow_mirror`, as `best_rigid_fit()` chooses), and that fit.
 inline std::pair<double, Rigid_fit> correspondence_match(const Prepared_quad& p,
                                                          const Prepared_quad& q,
-                                                         Quad_orientation o, bool allow_mirror)
+                                                         Panel_orientation o, bool allow_mirror)
 {
   const Panel target = reoriented(q.corners, o);
   auto residual = [&](const Rigid_fit& f, bool squared) {
@@ -172,12 +172,12 @@ inline std::pair<double, Rigid_fit> correspondence_match(const Prepared_quad& p,
 
 // The correspondences `policy` admits between panels of `n` corners, by
 // increasing index.
-inline Bounded_list<Quad_orientation, 8> admissible_orientations(int n, Orientation_policy policy)
+inline Bounded_list<Panel_orientation, 8> admissible_orientations(int n, Orientation_policy policy)
 {
-  Bounded_list<Quad_orientation, 8> r;
+  Bounded_list<Panel_orientation, 8> r;
   for(int o = 0; o < 8; ++o)
-    if(is_admissible(Quad_orientation(o), n, policy))
-      r.push_back(Quad_orientation(o));
+    if(is_admissible(Panel_orientation(o), n, policy))
+      r.push_back(Panel_orientation(o));
   return r;
 }
 
@@ -193,7 +193,7 @@ inline Quad_match fast_best_match(const Prepared_quad& p, const Prepared_quad& q
   // rule of `best_match()` (smallest index) among equal bounds.
   std::array<std::pair<double, int>, 8> order;
   int m = 0;
-  for(Quad_orientation orientation : admissible_orientations(n, policy))
+  for(Panel_orientation orientation : admissible_orientations(n, policy))
   {
     double bound = 0;
     for(int i = 0; i < n; ++i) bound += std::abs(q.radius[orientation(i, n)] - p.radius[i]);
@@ -207,7 +207,7 @@ inline Quad_match fast_best_match(const Prepared_quad& p, const Prepared_quad& q
     // The slack keeps correspondences whose bound ties the best up to rounding.
     if(order[rank].first > best.dissimilarity * (1 + tuning::match_bound_slack))
       break;
-    const Quad_orientation orientation(order[rank].second);
+    const Panel_orientation orientation(order[rank].second);
     const std::pair<double, Rigid_fit> match =
       correspondence_match(p, q, orientation, policy == ALLOW_MIRRORED_PANELS);
     if(match.first < best.dissimilarity ||

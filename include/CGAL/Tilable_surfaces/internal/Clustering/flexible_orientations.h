@@ -89,7 +89,7 @@ public:
   // admissible.
   Flexible_orientations(const std::vector<Shared_edge>& edges, const std::vector<std::size_t>& label,
                         std::size_t k, const std::vector<std::array<double, 8> >& dissimilarity,
-                        const std::vector<int>& corners, std::vector<Quad_orientation> orientation)
+                        const std::vector<int>& corners, std::vector<Panel_orientation> orientation)
     : m_edges(edges), m_label(label), m_k(k), m_d(dissimilarity), m_corners(corners)
     , m_orientation(std::move(orientation)), m_incident(label.size())
   {
@@ -114,13 +114,13 @@ public:
       bool changed = false;
       for(std::size_t f = 0; f < m_label.size(); ++f)
         for(int o = 0; o < 8; ++o)
-          changed = try_orientation(f, Quad_orientation(o)) || changed;
+          changed = try_orientation(f, Panel_orientation(o)) || changed;
       if(!changed)
         break;
     }
   }
 
-  const std::vector<Quad_orientation>& orientations() const { return m_orientation; }
+  const std::vector<Panel_orientation>& orientations() const { return m_orientation; }
   std::size_t degree_of_flexibility() const { return m_dof; }
 
   // Whether this tagging is better than `other` by the criteria of the file comment.
@@ -166,7 +166,7 @@ private:
   }
 
   // Moves the links of face f's edges to orientation o.
-  Change retag(std::size_t f, Quad_orientation o)
+  Change retag(std::size_t f, Panel_orientation o)
   {
     Change c;
     for(std::size_t i : m_incident[f])
@@ -199,9 +199,9 @@ private:
   // Re-tags face f with o if that improves the criteria of the file comment.
   // Links that only appear join components of the current union-find; a
   // vanished link may split one, which needs a recount.
-  bool try_orientation(std::size_t f, Quad_orientation o)
+  bool try_orientation(std::size_t f, Panel_orientation o)
   {
-    const Quad_orientation old = m_orientation[f];
+    const Panel_orientation old = m_orientation[f];
     if(o == old || !(m_d[f][o.index()] < std::numeric_limits<double>::infinity()))
       return false;
     const long long old_links = m_links;
@@ -248,7 +248,7 @@ private:
   const std::vector<std::array<double, 8> >& m_d;
   const std::vector<int>& m_corners;
   std::size_t m_unused_nodes = 0;
-  std::vector<Quad_orientation> m_orientation;
+  std::vector<Panel_orientation> m_orientation;
   std::vector<std::vector<std::size_t> > m_incident;
   std::unordered_map<std::uint64_t, int> m_count;  // distinct links and their multiplicity
   long long m_links = 0;                             // links, with multiplicity
@@ -265,17 +265,17 @@ private:
 // translated copies on a grid do; a triangle has no opposite edge). Faces
 // where the propagated orientation is not admissible keep `best`, and the
 // propagation goes on from them.
-inline std::vector<Quad_orientation>
+inline std::vector<Panel_orientation>
 propagated_orientations(const std::vector<Shared_edge>& edges, const std::vector<std::size_t>& label,
                         const std::vector<std::array<double, 8> >& dissimilarity,
                         const std::vector<int>& corners,
-                        const std::vector<Quad_orientation>& best, bool mirrored)
+                        const std::vector<Panel_orientation>& best, bool mirrored)
 {
   const std::size_t n = label.size();
   std::vector<std::vector<std::pair<std::size_t, int> > > incident(n);  // (edge, side)
   for(std::size_t i = 0; i < edges.size(); ++i)
     for(int s = 0; s < 2; ++s) incident[edges[i].face[s]].push_back({i, s});
-  std::vector<Quad_orientation> r = best;
+  std::vector<Panel_orientation> r = best;
   std::vector<bool> seen(n, false);
   std::vector<std::size_t> queue;
   for(std::size_t root = 0; root < n; ++root)
@@ -300,7 +300,7 @@ propagated_orientations(const std::vector<Shared_edge>& edges, const std::vector
         const int k = r[f].template_edge(e.edge[is.second], n);
         for(int o = 0; o < 8; ++o)
         {
-          const Quad_orientation c(o);
+          const Panel_orientation c(o);
           const bool fits = mirrored
             ? c.is_reversed() != r[f].is_reversed() && c.face_edge(k, n) == e.edge[1 - is.second]
             : c.is_reversed() == r[f].is_reversed() && c.face_edge((k + 2) & 3) == e.edge[1 - is.second];
@@ -328,7 +328,7 @@ admissible_dissimilarities(const std::vector<Panel>& quads, const std::vector<st
     const Prepared_quad p(s_quads[label[f]]), q(quads[f]);
     d[f].fill(inf);
     double best = inf;
-    for(Quad_orientation o : admissible_orientations(q.corners.size(), policy))
+    for(Panel_orientation o : admissible_orientations(q.corners.size(), policy))
     {
       d[f][std::size_t(o.index())] = correspondence_match(p, q, o, policy == ALLOW_MIRRORED_PANELS).first;
       best = (std::min)(best, d[f][std::size_t(o.index())]);
@@ -343,10 +343,10 @@ admissible_dissimilarities(const std::vector<Panel>& quads, const std::vector<st
 // The orientations of the file comment: the best of the local searches
 // started from the best orientations and from both propagated ones.
 template <typename PolygonMesh, typename FaceIndexMap>
-std::vector<Quad_orientation>
+std::vector<Panel_orientation>
 flexible_orientations(const PolygonMesh& pm, FaceIndexMap fim, const std::vector<Panel>& quads,
                       const std::vector<std::size_t>& label, const std::vector<Panel>& s_quads,
-                      const std::vector<Quad_orientation>& best, Orientation_policy policy,
+                      const std::vector<Panel_orientation>& best, Orientation_policy policy,
                       double tolerance)
 {
   const std::vector<Shared_edge> edges = shared_edges(pm, fim);
@@ -354,7 +354,7 @@ flexible_orientations(const PolygonMesh& pm, FaceIndexMap fim, const std::vector
     admissible_dissimilarities(quads, label, s_quads, policy, tolerance);
   std::vector<int> corners(quads.size());
   for(std::size_t f = 0; f < quads.size(); ++f) corners[f] = quads[f].size();
-  const std::vector<Quad_orientation> starts[3] = {
+  const std::vector<Panel_orientation> starts[3] = {
     best, propagated_orientations(edges, label, d, corners, best, true),
     propagated_orientations(edges, label, d, corners, best, false)};
   std::vector<Flexible_orientations> searches;

@@ -25,7 +25,7 @@ namespace internal {
 struct Initial_clustering
 {
   std::vector<std::size_t> cluster;             // per face
-  std::vector<Quad_orientation> orientation;    // per face, w.r.t. its leader
+  std::vector<Panel_orientation> orientation;    // per face, w.r.t. its leader
   std::vector<std::size_t> leaders;             // per cluster, increasing
 };
 
@@ -41,7 +41,7 @@ inline bool leader_clustering(const std::vector<Panel>& quads,
 {
   const std::size_t n = quads.size();
   out.cluster.assign(n, no_index());
-  out.orientation.assign(n, Quad_orientation());
+  out.orientation.assign(n, Panel_orientation());
   out.leaders.clear();
   std::vector<std::size_t> candidates;
   std::vector<Quad_match> matches;

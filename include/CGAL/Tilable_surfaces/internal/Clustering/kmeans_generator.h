@@ -57,7 +57,7 @@ private:
   // Each face's best match on the face of its cluster nearest to the
   // cluster's mean descriptor.
   template <typename Context>
-  static std::vector<Quad_orientation> nearest_to_mean_orientations(const Context& context,
+  static std::vector<Panel_orientation> nearest_to_mean_orientations(const Context& context,
                                                                     const std::vector<std::size_t>& label)
   {
     const std::size_t n = label.size(), k = context.k;
@@ -74,7 +74,7 @@ private:
         best[label[f]] = d;
       }
     }
-    std::vector<Quad_orientation> orientation(n);
+    std::vector<Panel_orientation> orientation(n);
     parallel_for(n, [&](std::size_t f) {
       orientation[f] =
         fast_best_match(context.panels[representative[label[f]]], context.panels[f], context.policy).orientation;

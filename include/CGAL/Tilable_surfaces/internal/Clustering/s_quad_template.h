@@ -63,7 +63,7 @@ inline double relative_move(const Panel& a, const Panel& b)
 inline Panel procrustes_mean(const std::vector<Panel>& quads,
                             const std::vector<std::size_t>& members,
                             Orientation_policy policy,
-                            const std::vector<Quad_orientation>* orientations = nullptr,
+                            const std::vector<Panel_orientation>* orientations = nullptr,
                             int max_passes = tuning::procrustes_passes, double tolerance = 0)
 {
   const std::size_t m = members.size();
@@ -105,7 +105,7 @@ inline Panel converged_procrustes_mean(const std::vector<Panel>& instances, bool
 {
   std::vector<std::size_t> members(instances.size());
   for(std::size_t i = 0; i < members.size(); ++i) members[i] = i;
-  const std::vector<Quad_orientation> as_labelled(instances.size());
+  const std::vector<Panel_orientation> as_labelled(instances.size());
   return procrustes_mean(instances, members, allow_mirror ? ALLOW_MIRRORED_PANELS : PROPER_RIGID_MOTIONS,
                          &as_labelled, tuning::converged_procrustes_passes,
                          tuning::converged_procrustes_tolerance);

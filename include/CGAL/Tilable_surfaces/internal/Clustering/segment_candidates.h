@@ -4,7 +4,7 @@
 #ifndef CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_SEGMENT_CANDIDATES_H
 #define CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_SEGMENT_CANDIDATES_H
 
-// Segment clusterings of quad grids, for the final pool of cluster_quads().
+// Segment clusterings of quad grids, for the final pool of cluster_panels().
 //
 // When the quads form a grid, rows x columns (every strip of one direction,
 // a row, crosses every strip of the other, a column, exactly once: a tube, a
@@ -211,7 +211,7 @@ inline Run_option run_option(const Quad_grid& grid, const std::vector<std::size_
   o.count.assign(groups, 0);
   const std::size_t middle = grid.rows / 2;
   std::vector<std::size_t> first(groups, no_index());
-  std::vector<Quad_orientation> orientation(grid.columns);
+  std::vector<Panel_orientation> orientation(grid.columns);
   for(std::size_t c = 0; c < grid.columns; ++c)
   {
     const std::size_t g = column_group[c];
@@ -247,7 +247,7 @@ inline Run_option run_option(const Quad_grid& grid, const std::vector<std::size_
 // matched with orientation `o`: d'(i, j) = d(o(i), o(j)). The 8 index
 // permutations are tabulated once: the column grouping calls this in its
 // inner loop.
-inline Eigen::Matrix<double, 6, 1> reoriented(const Eigen::Matrix<double, 6, 1>& d, Quad_orientation o)
+inline Eigen::Matrix<double, 6, 1> reoriented(const Eigen::Matrix<double, 6, 1>& d, Panel_orientation o)
 {
   typedef std::array<std::array<int, 6>, 8> Table;
   static const Table permutation = [] {
@@ -255,7 +255,7 @@ inline Eigen::Matrix<double, 6, 1> reoriented(const Eigen::Matrix<double, 6, 1>&
     Table t{};
     for(int index = 0; index < 8; ++index)
     {
-      const Quad_orientation to(index);
+      const Panel_orientation to(index);
       for(int p = 0; p < 6; ++p)
         for(int q = 0; q < 6; ++q)
         {
@@ -286,7 +286,7 @@ inline std::vector<std::size_t> group_columns(const Quad_grid& grid, std::size_t
   for(std::size_t c = 0; c < columns; ++c)
     for(std::size_t r = 0; r < rows; ++r)
       sum[c][r] = corner_distances(grid.corners[grid.face_at[r * columns + c]]);
-  std::vector<Quad_orientation> match(columns * columns);
+  std::vector<Panel_orientation> match(columns * columns);
   parallel_for(columns, [&](std::size_t a) {
     for(std::size_t b = a + 1; b < columns; ++b)
       match[a * columns + b] = fast_best_match(grid.corners[grid.face_at[middle * columns + a]],

@@ -5,7 +5,7 @@
 #define CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_STRIP_CANDIDATES_H
 
 // Clusterings that follow the quad strips of the mesh, for the final pool of
-// cluster_quads().
+// cluster_panels().
 //
 // A quad strip (a polychord) is a sequence of faces, each entered and left
 // through two opposite edges. Every face lies on two strips, one per pair of
@@ -203,7 +203,7 @@ merge_strips_to_each(const std::vector<std::size_t>& targets, const PolygonMesh&
   std::vector<std::size_t> parent(s);
   for(std::size_t c = 0; c < s; ++c)
     parent[c] = c;
-  std::vector<Quad_orientation> correspondence(s * s);
+  std::vector<Panel_orientation> correspondence(s * s);
   parallel_for(s, [&](std::size_t a) {
     for(std::size_t b = a + 1; b < s; ++b)
       correspondence[a * s + b] = fast_best_match(shapes.s_quads[a], shapes.s_quads[b], policy).orientation;
@@ -255,7 +255,7 @@ void bring_to(std::size_t k, const PolygonMesh& pm, FaceIndexMap fim, VertexPoin
   {
     Initial_clustering init;
     init.cluster = label;
-    init.orientation.assign(label.size(), Quad_orientation());
+    init.orientation.assign(label.size(), Panel_orientation());
     init.leaders.assign(s, no_index());
     for(std::size_t f = label.size(); f-- > 0;)
       init.leaders[label[f]] = f;

@@ -189,7 +189,7 @@ Point_matrix grid_sweep_start(const PolygonMesh& pm, VertexIndexMap vim,
 template <typename PolygonMesh, typename FaceIndexMap, typename VertexIndexMap, typename VertexPointMap>
 Point_matrix quad_grid_sweep_start(const PolygonMesh& pm, FaceIndexMap fim, VertexIndexMap vim, VertexPointMap vpm,
                                    const Point_matrix& points, const std::vector<std::size_t>& label,
-                                   std::vector<Quad_orientation>* orientation, bool closed_only)
+                                   std::vector<Panel_orientation>* orientation, bool closed_only)
 {
   typedef typename boost::graph_traits<PolygonMesh>::face_descriptor face_descriptor;
   std::vector<face_descriptor> face_of(num_faces(pm));
@@ -211,7 +211,7 @@ Point_matrix quad_grid_sweep_start(const PolygonMesh& pm, FaceIndexMap fim, Vert
     // Corner i in grid order is the face's vertex corner_offset + i.
     if(orientation != nullptr)
       for(std::size_t f = 0; f < grid.corner_offset.size(); ++f)
-        (*orientation)[f] = Quad_orientation(grid.corner_offset[f] % 4);
+        (*orientation)[f] = Panel_orientation(grid.corner_offset[f] % 4);
     return start;
   }
   return Point_matrix();
@@ -226,7 +226,7 @@ Point_matrix quad_grid_sweep_start(const PolygonMesh& pm, FaceIndexMap fim, Vert
 template <typename PolygonMesh, typename FaceIndexMap, typename VertexIndexMap, typename VertexPointMap>
 Point_matrix sweep_start(const PolygonMesh& pm, FaceIndexMap fim, VertexIndexMap vim, VertexPointMap vpm,
                          const Point_matrix& points, const std::vector<std::size_t>& label,
-                         std::vector<Quad_orientation>* orientation = nullptr)
+                         std::vector<Panel_orientation>* orientation = nullptr)
 {
   Pole_fans fans;
   const Triangle_layout layout = pole_fans(pm, fim, vim, vpm, fans);
@@ -240,7 +240,7 @@ Point_matrix sweep_start(const PolygonMesh& pm, FaceIndexMap fim, VertexIndexMap
   Point_matrix quad_points(Eigen::Index(fans.vertex_of.size()), 3);
   for(std::size_t v = 0; v < fans.vertex_of.size(); ++v)
     quad_points.row(Eigen::Index(v)) = points.row(Eigen::Index(fans.vertex_of[v]));
-  std::vector<Quad_orientation> quad_orientation(quad_label.size());
+  std::vector<Panel_orientation> quad_orientation(quad_label.size());
   const Point_matrix quad_start =
     quad_grid_sweep_start(quads, get(CGAL::face_index, quads), get(CGAL::vertex_index, quads),
                           get(CGAL::vertex_point, quads), quad_points, quad_label, &quad_orientation, true);
@@ -262,11 +262,11 @@ Point_matrix sweep_start(const PolygonMesh& pm, FaceIndexMap fim, VertexIndexMap
       const std::array<std::size_t, 4>& corners = fans.quad_corners[f];
       const std::size_t first = fans.vertex_of[std::size_t(target(h, quads))];
       (*orientation)[fans.face_of[f]] =
-        Quad_orientation(int(std::find(corners.begin(), corners.end(), first) - corners.begin()));
+        Panel_orientation(int(std::find(corners.begin(), corners.end(), first) - corners.begin()));
     }
     for(std::size_t fan = 0; fan < fans.triangles.size(); ++fan)
       for(std::size_t t = 0; t < fans.triangles[fan].size(); ++t)
-        (*orientation)[fans.triangles[fan][t]] = Quad_orientation(fans.pole_corner[fan][t]);
+        (*orientation)[fans.triangles[fan][t]] = Panel_orientation(fans.pole_corner[fan][t]);
   }
   return start;
 }

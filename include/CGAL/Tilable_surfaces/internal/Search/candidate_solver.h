@@ -11,7 +11,7 @@
 
 #include <CGAL/Tilable_surfaces/Edge_sharing_graph.h>
 #include <CGAL/Tilable_surfaces/cluster_editing.h>
-#include <CGAL/Tilable_surfaces/cluster_quads.h>
+#include <CGAL/Tilable_surfaces/cluster_panels.h>
 #include <CGAL/Tilable_surfaces/optimize_tilable_surface.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/candidate_generator.h>
 #include <CGAL/Tilable_surfaces/internal/Face_clustering.h>
@@ -132,7 +132,7 @@ public:
   // quads correspond in grid order. Empty when there is none.
   Point_matrix swept_start(Face_clustering& model) const
   {
-    std::vector<Quad_orientation> orientation(model.orientation.size());
+    std::vector<Panel_orientation> orientation(model.orientation.size());
     const Point_matrix start = internal::sweep_start(
       m_state.mesh, m_state.fim, m_state.vim, m_state.input_point_map(),
       internal::read_points(m_state.mesh, m_state.input_point_map(), m_state.vim), model.label, &orientation);

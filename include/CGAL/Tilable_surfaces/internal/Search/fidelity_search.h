@@ -63,7 +63,7 @@
 // reads the pool and writes the choice (Clustering_result).
 
 #include <CGAL/Tilable_surfaces/Edge_sharing_graph.h>
-#include <CGAL/Tilable_surfaces/cluster_quads.h>
+#include <CGAL/Tilable_surfaces/cluster_panels.h>
 #include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/optimize_tilable_surface.h>
 #include <CGAL/Tilable_surfaces/visitor.h>
@@ -441,7 +441,7 @@ private:
           continue; // that would undo the split, or mix quads and triangles
         double spread = std::numeric_limits<double>::infinity();
         for(int o = 0; o < 8; ++o)
-          spread = (std::min)(spread, graph.length_deviation_after_merge(a, b, Quad_orientation(o)));
+          spread = (std::min)(spread, graph.length_deviation_after_merge(a, b, Panel_orientation(o)));
         pairs.push_back({spread, {a, b}});
       }
     if(pairs.empty())

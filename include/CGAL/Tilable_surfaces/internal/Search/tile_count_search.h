@@ -10,7 +10,7 @@
 // deviation search), and the deviation search itself.
 
 #include <CGAL/Tilable_surfaces/K_set_tilable_result.h>
-#include <CGAL/Tilable_surfaces/cluster_quads.h>
+#include <CGAL/Tilable_surfaces/cluster_panels.h>
 #include <CGAL/Tilable_surfaces/exceptions.h>
 #include <CGAL/Tilable_surfaces/named_parameters.h>
 #include <CGAL/Tilable_surfaces/optimize_tilable_surface.h>

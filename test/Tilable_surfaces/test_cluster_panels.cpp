@@ -1,7 +1,7 @@
 // Clustering into S-quads and interactive editing: facts checked by
 // construction, by symmetry and by an independent brute-force count.
 #include <CGAL/Tilable_surfaces/cluster_editing.h>
-#include <CGAL/Tilable_surfaces/cluster_quads.h>
+#include <CGAL/Tilable_surfaces/cluster_panels.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/fast_match.h>
 #include <CGAL/Tilable_surfaces/internal/canonical_face_order.h>
 
@@ -28,7 +28,7 @@
 #include <vector>
 
 // One namespace per file: the testsuite is compiled as unity batches.
-namespace test_cluster_quads_unit {
+namespace test_cluster_panels_unit {
 
 namespace TS = CGAL::Tilable_surfaces;
 typedef CGAL::Simple_cartesian<double> Kernel;
@@ -63,7 +63,7 @@ Maps maps(Mesh& m)
 TS::Clustering_result cluster(Mesh& m, const Maps& mp, std::size_t k,
                               TS::Clustering_path path = TS::AUTOMATIC_PATH)
 {
-  return TS::cluster_quads(m, TS::parameters::number_of_tiles(k)
+  return TS::cluster_panels(m, TS::parameters::number_of_tiles(k)
                                 .face_cluster_map(mp.cluster)
                                 .face_orientation_map(mp.orientation)
                                 .clustering_path(path));
@@ -79,7 +79,7 @@ std::size_t brute_force_dof(const Mesh& m, const Maps& mp, std::size_t k)
     Mesh::Halfedge_index g = m.halfedge(f);
     int j = 0;
     for(g = m.next(g); g != h; g = m.next(g)) ++j;  // h is face edge j
-    const TS::Quad_orientation o(mp.orientation[f]);
+    const TS::Panel_orientation o(mp.orientation[f]);
     return 4 * mp.cluster[f] + std::size_t(o.template_edge(j));
   };
   std::vector<std::vector<std::size_t> > adjacent(4 * k);
@@ -120,7 +120,7 @@ std::size_t number_of_clusters(const Mesh& m, const Maps& mp)
 }
 
 // sum_i |q_o(i) - T(p_i)|, T the best rigid fit of p onto q relabelled by o.
-double sum_of_distances(const TS::Panel& p, const TS::Panel& q, TS::Quad_orientation o,
+double sum_of_distances(const TS::Panel& p, const TS::Panel& q, TS::Panel_orientation o,
                         bool allow_mirror = false)
 {
   const TS::Panel t = TS::reoriented(q, o);
@@ -132,7 +132,7 @@ double sum_of_distances(const TS::Panel& p, const TS::Panel& q, TS::Quad_orienta
 
 // Every face's orientation minimises its dissimilarity to its S-quad, ties
 // allowed: ties within tau = 0.01 x mean edge length, the similarity
-// threshold (see cluster_quads()).
+// threshold (see cluster_panels()).
 void expect_admissible_orientations(const Mesh& m, const Maps& mp, const TS::Clustering_result& r)
 {
   const double scale = TS::mean_edge_length(m);
@@ -143,7 +143,7 @@ void expect_admissible_orientations(const Mesh& m, const Maps& mp, const TS::Clu
     // Best over the 8 correspondences (quad_shape.h's reference implementation)
     // against the sum of corner distances under the tagged correspondence.
     const double best = TS::best_match(s, q).dissimilarity;
-    const double tagged = sum_of_distances(s, q, TS::Quad_orientation(mp.orientation[f]));
+    const double tagged = sum_of_distances(s, q, TS::Panel_orientation(mp.orientation[f]));
     EXPECT_LE(tagged, best + 0.01 * scale + 1e-9 * scale) << "face " << int(f);
   }
 }
@@ -217,7 +217,7 @@ TEST(FastMatch, SameAsBestMatch)
       for(int o = 0; o < (policy == TS::NO_TURNED_OVER_PANELS ? 4 : 8); ++o)
         if(o != a.orientation.index())
           second_best = (std::min)(second_best,
-            sum_of_distances(c.first, c.second, TS::Quad_orientation(o),
+            sum_of_distances(c.first, c.second, TS::Panel_orientation(o),
                              policy == TS::ALLOW_MIRRORED_PANELS));
       if(second_best > a.dissimilarity + 1e-6)
       {
@@ -281,7 +281,7 @@ TEST(ClusterQuads, OrientationsChosenForFlexibilityOnSymmetricTiles)
     {
       Mesh m = grid<Mesh>(5, 4, 2, h);
       Maps mp = maps(m);
-      const TS::Clustering_result r = TS::cluster_quads(
+      const TS::Clustering_result r = TS::cluster_panels(
         m, TS::parameters::number_of_tiles(1).face_cluster_map(mp.cluster)
              .face_orientation_map(mp.orientation).orientation_policy(policy));
       EXPECT_EQ(r.degree_of_flexibility, 4u) << "h " << h << ", policy " << int(policy);
@@ -553,4 +553,4 @@ TEST(ClusterQuads, DescriptorPathOnALargerGrid)
   EXPECT_EQ(r.degree_of_flexibility, brute_force_dof(m, mp, 50));
 }
 
-} // namespace test_cluster_quads_unit
+} // namespace test_cluster_panels_unit

@@ -21,7 +21,7 @@
 #include <vector>
 
 // One namespace per file: the testsuite is compiled as unity batches.
-namespace test_read_quad_mesh_unit {
+namespace test_read_panel_mesh_unit {
 
 namespace TS = CGAL::Tilable_surfaces;
 namespace TSP = CGAL::Tilable_surfaces::parameters;
@@ -42,7 +42,7 @@ std::string write(const Temp_dir& dir, const std::string& name, const std::strin
 std::string refusal(const std::string& path)
 {
   Mesh mesh;
-  try { TS::IO::read_quad_mesh(path, mesh); }
+  try { TS::IO::read_panel_mesh(path, mesh); }
   catch(const TS::Invalid_input& e)
   {
     EXPECT_TRUE(mesh.is_empty()) << "the mesh is left empty";
@@ -90,7 +90,7 @@ TEST(ReadQuadMesh, ReadsTheTestDataLikeCgal)
                           "quad_dome.obj", "mushroom.off"})
   {
     Mesh ours, cgal;
-    const TS::IO::Read_report report = TS::IO::read_quad_mesh(data_dir + "/" + name, ours);
+    const TS::IO::Read_report report = TS::IO::read_panel_mesh(data_dir + "/" + name, ours);
     ASSERT_TRUE(CGAL::IO::read_polygon_mesh(data_dir + "/" + name, cgal)) << name;
     EXPECT_EQ(report.number_of_isolated_vertices, 0u) << name;
     EXPECT_TRUE(report.warnings.empty()) << name;
@@ -161,7 +161,7 @@ TEST(ReadQuadMesh, ReadsBackTheTiledPlyBinaryAndAscii)
 {
   const Temp_dir dir("read_ply");
   Mesh mesh;
-  TS::IO::read_quad_mesh(data_dir + "/monkey_saddle.off", mesh);
+  TS::IO::read_panel_mesh(data_dir + "/monkey_saddle.off", mesh);
   auto cluster = mesh.add_property_map<Mesh::Face_index, int>("f:c", 0).first;
   auto orientation = mesh.add_property_map<Mesh::Face_index, int>("f:o", 0).first;
   for(bool binary : {true, false})
@@ -174,7 +174,7 @@ TEST(ReadQuadMesh, ReadsBackTheTiledPlyBinaryAndAscii)
                                                       .use_binary_mode(binary)));
     }
     Mesh back;
-    TS::IO::read_quad_mesh(path, back);
+    TS::IO::read_panel_mesh(path, back);
     ASSERT_EQ(back.number_of_faces(), mesh.number_of_faces());
     EXPECT_TRUE(std::equal(back.points().begin(), back.points().end(), mesh.points().begin())) << binary;
   }
@@ -184,10 +184,10 @@ TEST(ReadQuadMesh, KeepsUnusedVerticesWhichThePackageNeverMoves)
 {
   const Temp_dir dir("read_isolated");
   Mesh plain, cad;
-  TS::IO::read_quad_mesh(write(dir, "plain.obj", grid_obj("")), plain);
+  TS::IO::read_panel_mesh(write(dir, "plain.obj", grid_obj("")), plain);
   // Inside the bounding box, so that nothing scaled by it changes.
   const TS::IO::Read_report report =
-    TS::IO::read_quad_mesh(write(dir, "cad.obj", grid_obj("v 1.5 0.5 0.25\n")), cad);
+    TS::IO::read_panel_mesh(write(dir, "cad.obj", grid_obj("v 1.5 0.5 0.25\n")), cad);
   ASSERT_EQ(report.number_of_isolated_vertices, 1u);
   ASSERT_EQ(report.warnings.size(), 1u);
   EXPECT_TRUE(contains(report.warnings[0], "the first is vertex 12")) << report.warnings[0];
@@ -195,7 +195,7 @@ TEST(ReadQuadMesh, KeepsUnusedVerticesWhichThePackageNeverMoves)
   const Mesh::Vertex_index isolated(12);
   EXPECT_TRUE(cad.is_isolated(isolated));
   EXPECT_EQ(TS::number_of_isolated_vertices(cad), 1u);
-  EXPECT_NO_THROW(TS::validate_quad_mesh(cad));
+  EXPECT_NO_THROW(TS::validate_panel_mesh(cad));
 
   auto run = [](Mesh& m) {
     auto c = m.add_property_map<Mesh::Face_index, int>("f:c", 0).first;
@@ -222,10 +222,10 @@ TEST(ReadQuadMesh, KeepsUnusedVerticesWhichThePackageNeverMoves)
   EXPECT_EQ(with.clustering.degree_of_flexibility, without.clustering.degree_of_flexibility);
 }
 
-// The message of validate_quad_mesh() on `mesh` ("" if it accepts it).
+// The message of validate_panel_mesh() on `mesh` ("" if it accepts it).
 std::string validation_error(const Mesh& mesh)
 {
-  try { TS::validate_quad_mesh(mesh); }
+  try { TS::validate_panel_mesh(mesh); }
   catch(const TS::Invalid_input& e) { return e.what(); }
   return "";
 }
@@ -234,19 +234,19 @@ TEST(ReadQuadMesh, OverflowingCoordinatesAreReadThenRefusedAsSuch)
 {
   const Temp_dir dir("read_huge");
   Mesh mesh;
-  TS::IO::read_quad_mesh(write(dir, "huge.off", "OFF\n4 1 0\n0 0 0\n1e300 0 0\n1e300 1e300 0\n0 1e300 0\n"
+  TS::IO::read_panel_mesh(write(dir, "huge.off", "OFF\n4 1 0\n0 0 0\n1e300 0 0\n1e300 1e300 0\n0 1e300 0\n"
                                                 "4 0 1 2 3\n"), mesh);
   const std::string huge = validation_error(mesh);
   EXPECT_TRUE(contains(huge, "vertex 1 has a coordinate beyond 1e150")) << huge;
   EXPECT_TRUE(contains(huge, "overflows")) << huge;
   // Far from the origin relative to its size: doubles cannot resolve it.
   Mesh far;
-  TS::IO::read_quad_mesh(write(dir, "far.off", "OFF\n4 1 0\n1e9 0 0\n1e9 1e-3 0\n1e9 1e-3 1e-3\n"
+  TS::IO::read_panel_mesh(write(dir, "far.off", "OFF\n4 1 0\n1e9 0 0\n1e9 1e-3 0\n1e9 1e-3 1e-3\n"
                                                "1e9 0 1e-3\n4 0 1 2 3\n"), far);
   EXPECT_TRUE(contains(validation_error(far), "move the mesh near the origin")) << validation_error(far);
   // The same square near the origin is fine.
   Mesh near;
-  TS::IO::read_quad_mesh(write(dir, "near.off", "OFF\n4 1 0\n1 0 0\n1 1e-3 0\n1 1e-3 1e-3\n"
+  TS::IO::read_panel_mesh(write(dir, "near.off", "OFF\n4 1 0\n1 0 0\n1 1e-3 0\n1 1e-3 1e-3\n"
                                                 "1 0 1e-3\n4 0 1 2 3\n"), near);
   EXPECT_EQ(validation_error(near), "");
 }
@@ -275,4 +275,4 @@ TEST(ReadQuadMesh, UnreadableCoordinatesAreNamed)
                        "(corrupt or truncated file)"));
 }
 
-} // namespace test_read_quad_mesh_unit
+} // namespace test_read_panel_mesh_unit

@@ -188,7 +188,7 @@ int main(int argc, char** argv)
     {"polar dome", benchmark_surfaces::polar_dome<Mesh>, {32, 100, 315}},
     {"facade with openings", benchmark_surfaces::facade_with_openings<Mesh>, {36, 112, 352}},
     // No sweep: its candidates are solved from the input with the whole KKT
-    // system, 1 to 3 s per iteration at 10k quads (results.md, stop 36), so
+    // system, 1 to 3 s per iteration at 10k quads (results.md, Scale), so
     // 100k is left out.
     {"quad ball", benchmark_surfaces::quad_ball<Mesh>, {13, 41}}};
   for(const std::string& name : surfaces)

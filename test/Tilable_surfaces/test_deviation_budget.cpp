@@ -178,8 +178,8 @@ TEST(TileCountSearch, SmallestKWithinTheBudgetOnAMeshWhereEveryKIsChecked)
   EXPECT_LE(m.hausdorff_distance, budget);
 }
 
-// The monkey saddle's own searches are far from monotone in K (results.md,
-// stop 33: K = 8 30%, K = 16 31.6%), so the search refines: with at most 16
+// The monkey saddle's own searches are far from monotone in K (measured:
+// K = 8 30%, K = 16 31.6%), so the search refines: with at most 16
 // molds and a budget no K up to 16 meets, it tries K = 4, 8, 16, and K = 16
 // is K = 8's result refined, no farther than it.
 TEST(TileCountSearch, RefinesAKFromABetterResultOfFewerMoldsTriedBefore)
@@ -238,7 +238,7 @@ TEST(TileCountCurve, TheCsvHasOneRowPerKWithItsValues)
 }
 
 // The monkey saddle's own search ends at 5.1% of the diagonal at K = 13 and
-// at 31.6% at K = 14 (results.md, stop 33). With 14 molds the K = 13 result
+// at 31.6% at K = 14. With 14 molds the K = 13 result
 // is still a 14-set tiling (a split cluster's parts are instances of its
 // S-quad), so the curve's K = 14 is that one refined: tilable, not crossing,
 // no farther than K = 13.

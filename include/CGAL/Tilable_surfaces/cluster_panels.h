@@ -572,8 +572,7 @@ Clustering_result cluster_panels(Validated_mesh, const PolygonMesh& pm, const Na
 ///    `use_auto_merge`, every pair of clusters whose S-quad edges lie in the
 ///    same 4 components of the edge-sharing graph, which keeps the degree of
 ///    flexibility). Each proposal gets the score
-///    <center>score = W / W1 + flexibility_penalty x (D0 - D) / D0
-///    + structure_penalty x V / V1</center>
+///    score = W / W1 + flexibility_penalty x (D0 - D) / D0 + structure_penalty x V / V1,
 ///    with W the configuration's weight, W1 the weight of the single-cluster
 ///    configuration (one cluster per panel kind on a mesh with triangles), D
 ///    its degree of flexibility (a copy of the parent's `Edge_sharing_graph`

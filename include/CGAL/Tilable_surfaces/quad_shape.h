@@ -578,7 +578,11 @@ double mean_edge_length(const PolygonMesh& pm,
 #ifndef CGAL_NO_DEPRECATED_CODE
 /// \ingroup PkgTilableSurfacesRef
 /// \deprecated The name of `Panel_orientation` until 1.0.0.
+#ifdef DOXYGEN_RUNNING
+typedef Panel_orientation Quad_orientation;
+#else
 using Quad_orientation CGAL_DEPRECATED_MSG("use Panel_orientation") = Panel_orientation;
+#endif
 #endif
 
 } // namespace Tilable_surfaces

@@ -38,7 +38,8 @@ cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Sanitize \
   -DCMAKE_MODULE_LINKER_FLAGS_SANITIZE="-fsanitize=$sanitizers" \
   -DCMAKE_SHARED_LINKER_FLAGS_SANITIZE="-fsanitize=$sanitizers" \
   -DTILABLE_SURFACES_PYTHON_TEST_ENVIRONMENT="$python_environment" \
-  -DTILABLE_SURFACES_BUILD_BENCHMARKS=OFF > build-sanitize-configure.log 2>&1 \
+  -DTILABLE_SURFACES_BUILD_BENCHMARKS=OFF -DTILABLE_SURFACES_TEST_BATCH_SIZE=4 \
+  -DTILABLE_SURFACES_INPUT_TEST_BATCH_SIZE=4 > build-sanitize-configure.log 2>&1 \
   || { cat build-sanitize-configure.log; exit 1; }
 jobs=${SANITIZE_JOBS:-$(nproc 2>/dev/null || echo 2)}
 build_targets=(--target all)

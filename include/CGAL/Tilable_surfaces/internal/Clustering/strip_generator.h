@@ -9,6 +9,7 @@
 // beside strip_candidates.h because the strips it groups are chosen with the
 // grid test of sweep_candidates.h (candidate_strips()).
 
+#include <CGAL/Tilable_surfaces/internal/Clustering/segment_candidates.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/strip_candidates.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/sweep_candidates.h>
 
@@ -27,20 +28,13 @@ struct Quad_strip_generator
   template <typename Context>
   std::vector<typename Context::Candidate> operator()(const Context& context) const
   {
-    std::vector<typename Context::Candidate> result;
     if(!context.settings.use_strips || context.k <= 1)
-      return result;
-    for(std::vector<std::size_t>& label :
-        strip_clusterings(context.mesh, context.face_index, context.vertex_point, context.panels,
-                          context.descriptors, context.k, context.policy, context.random,
-                          candidate_strips(context.mesh, context.face_index, context.vertex_point)))
-    {
-      typename Context::Candidate candidate;
-      candidate.origin = Context::QUAD_STRIPS;
-      candidate.label = std::move(label);
-      result.push_back(std::move(candidate));
-    }
-    return result;
+      return {};
+    return best_match_candidates<typename Context::Candidate>(
+      strip_clusterings(context.mesh, context.face_index, context.vertex_point, context.panels,
+                        context.descriptors, context.k, context.policy, context.random,
+                        candidate_strips(context.mesh, context.face_index, context.vertex_point)),
+      Context::QUAD_STRIPS);
   }
 };
 

@@ -27,11 +27,15 @@
 // congruence error is where the solver was.
 //
 // Given mesh files instead, it runs each of them, at K = max(4, faces / 25)
-// unless --k is given (the rule of the issue "Scale and robust exactness").
+// unless --k is given. With `--subdivide L`, each file is also run after 1
+// to L steps of Catmull-Clark subdivision (CGAL's, each step 4 times the
+// quads, a triangle 3 quads) up to --max-quads: a series of meshes that are
+// no grid, with its growth exponents.
 //
 // `--surface NAME` (repeatable) runs only the generated surfaces named.
 //
-// Usage: benchmark_pipeline [--k K] [--max-quads N] [--budget SECONDS] [--surface NAME] [FILE ...]
+// Usage: benchmark_pipeline [--k K] [--max-quads N] [--budget SECONDS] [--surface NAME]
+//                           [--subdivide L] [FILE ...]
 #include "benchmark_surfaces.h"
 
 #include <CGAL/Tilable_surfaces/IO/read_polygon_mesh.h>
@@ -40,6 +44,7 @@
 
 #include <CGAL/Real_timer.h>
 #include <CGAL/Simple_cartesian.h>
+#include <CGAL/subdivision_method_3.h>
 #include <CGAL/Surface_mesh.h>
 
 #include <algorithm>
@@ -130,20 +135,77 @@ bool run(const std::string& name, Mesh& mesh, std::size_t k, double budget, doub
       mesh, TS::parameters::number_of_tiles(k).visitor(Budget_visitor{{}, &record}));
   const TS::Tilability_measure& m = r.optimization.measure;
   char cells[160];
-  std::snprintf(cells, sizeof cells, "%.1f%s | %.0f | %.1e | %zu | %.2f | %zu", r.total_time,
+  std::snprintf(cells, sizeof cells, "%.1f%s | %.0f | %.1e | %zu | %.2f | %zu | %zu", r.total_time,
                 record.stopped ? " (stopped)" : "", benchmark_surfaces::peak_memory_mb(),
                 m.congruence_error, m.number_of_distinct_molds, 100 * m.hausdorff_distance,
-                m.self_intersecting_face_pairs);
+                m.self_intersecting_face_pairs, m.flattened_panels);
   std::cout << "| " << name << " | " << mesh.number_of_faces() << " | " << k << " | "
             << seconds(record, "validation") << " | " << seconds(record, "clustering") << " | "
             << seconds(record, "sweep candidate") << " | " << seconds(record, "displacement prediction") << " | "
             << seconds(record, "candidate optimization") << " | " << seconds(record, "improvement round")
             << " | " << cells << " | "
-            << (r.clustering.candidates[r.clustering.chosen_candidate].origin == TS::Clustering_candidate::GRID_SWEEPS
-                  ? "sweep" : "other")
+            << TS::internal::origin_traits(r.clustering.candidates[r.clustering.chosen_candidate].origin).name
             << " |" << std::endl;
   total_time = r.total_time;
   return !record.stopped;
+}
+
+// Records a finished run of `mesh` in a series: all sizes, and those above
+// large_mesh_faces.
+struct Series_times
+{
+  std::vector<double> sizes, times, large_sizes, large_times;
+
+  void add(const Mesh& mesh, double seconds)
+  {
+    sizes.push_back(double(mesh.number_of_faces()));
+    times.push_back(seconds);
+    if(mesh.number_of_faces() > TS::large_mesh_faces)
+    {
+      large_sizes.push_back(sizes.back());
+      large_times.push_back(seconds);
+    }
+  }
+  void print(std::ostream& out, const std::string& name) const
+  {
+    out << '\n';
+    print_growth(out, name.c_str(), sizes, times, "the sizes that finished");
+    print_growth(out, name.c_str(), large_sizes, large_times, "the sizes above large_mesh_faces that finished");
+  }
+};
+
+// The mesh file `file`, then up to `subdivisions` Catmull-Clark steps of it
+// of at most `max_quads` faces, at K = k or max(4, faces / 25); their growth
+// exponents to `growth`.
+void run_file_series(const std::string& file, int subdivisions, std::size_t k, std::size_t max_quads,
+                     double budget, std::ostream& growth)
+{
+  const std::string name = file.substr(file.find_last_of('/') + 1);
+  Series_times series;
+  try
+  {
+    Mesh mesh;
+    TS::IO::read_panel_mesh(file, mesh);
+    for(int level = 0; level <= subdivisions && mesh.number_of_faces() <= max_quads; ++level)
+    {
+      if(level > 0)
+        CGAL::Subdivision_method_3::CatmullClark_subdivision(mesh, CGAL::parameters::number_of_iterations(1));
+      if(mesh.number_of_faces() > max_quads)
+        break;
+      Mesh copy = mesh;
+      double seconds_taken = 0;
+      const std::string row = level == 0 ? name : name + " (subdivided " + std::to_string(level) + "x)";
+      if(run(row, copy, k > 0 ? k : (std::max)(std::size_t(4), std::size_t(mesh.number_of_faces()) / 25),
+             budget, seconds_taken))
+        series.add(mesh, seconds_taken);
+    }
+  }
+  catch(const std::exception& e)
+  {
+    std::cout << "| " << name << " | refused: " << e.what() << " |\n";
+  }
+  if(subdivisions > 0)
+    series.print(growth, name);
 }
 
 // A generated surface and the resolutions n it is run at.
@@ -159,6 +221,7 @@ struct Series
 int main(int argc, char** argv)
 {
   std::size_t k = 0, max_quads = 100000;
+  int subdivisions = 0;
   double budget = 600;
   std::vector<std::string> files, surfaces;
   for(int i = 1; i < argc; ++i)
@@ -172,10 +235,12 @@ int main(int argc, char** argv)
       budget = std::stod(argv[++i]);
     else if(i + 1 < argc && arg == "--surface")
       surfaces.push_back(argv[++i]);
+    else if(i + 1 < argc && arg == "--subdivide")
+      subdivisions = std::stoi(argv[++i]);
     else if(arg.rfind("--", 0) == 0)
     {
       std::cerr << "usage: benchmark_pipeline [--k K] [--max-quads N] [--budget SECONDS] [--surface NAME] "
-                   "[FILE ...]\n";
+                   "[--subdivide L] [FILE ...]\n";
       return EXIT_FAILURE;
     }
     else
@@ -201,36 +266,25 @@ int main(int argc, char** argv)
     std::cout << "(the peak memory cannot be reset here: each row's is the largest so far)\n";
   std::cout << "| surface | quads | K | validation (s) | clustering (s) | sweeps (s) | prediction (s)"
                " | candidate optimization (s) | improvement (s) | total (s) | peak memory (MB)"
-               " | congruence | distinct molds | Hausdorff (% diag) | crossing face pairs | chosen |\n"
-            << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
+               " | congruence | distinct molds | Hausdorff (% diag) | crossing face pairs | flattened panels"
+               " | chosen |\n"
+            << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
+  std::ostringstream growth;
   for(const std::string& file : files)
-  {
-    const std::string name = file.substr(file.find_last_of('/') + 1);
-    Mesh mesh;
-    try
-    {
-      TS::IO::read_panel_mesh(file, mesh);
-      double seconds_taken = 0;
-      run(name, mesh,
-          k > 0 ? k : (std::max)(std::size_t(4), std::size_t(mesh.number_of_faces()) / 25), budget,
-          seconds_taken);
-    }
-    catch(const std::exception& e)
-    {
-      std::cout << "| " << name << " | refused: " << e.what() << " |\n";
-    }
-  }
+    run_file_series(file, subdivisions, k, max_quads, budget, growth);
   if(!files.empty())
+  {
+    std::cout << growth.str();
     return EXIT_SUCCESS;
+  }
 
   // Each series of sizes of a generated surface; its growth exponents are
   // printed after the table.
-  std::ostringstream growth;
   for(const Series& s : generated)
   {
     if(!surfaces.empty() && std::find(surfaces.begin(), surfaces.end(), s.name) == surfaces.end())
       continue;
-    std::vector<double> sizes, times, large_sizes, large_times;
+    Series_times series;
     for(int n : s.resolutions)
     {
       Mesh mesh = s.generate(n);
@@ -238,19 +292,9 @@ int main(int argc, char** argv)
         break;
       double seconds_taken = 0;
       if(run(s.name, mesh, k > 0 ? k : 100, budget, seconds_taken))
-      {
-        sizes.push_back(double(mesh.number_of_faces()));
-        times.push_back(seconds_taken);
-        if(mesh.number_of_faces() > TS::large_mesh_faces)
-        {
-          large_sizes.push_back(sizes.back());
-          large_times.push_back(seconds_taken);
-        }
-      }
+        series.add(mesh, seconds_taken);
     }
-    growth << '\n';
-    print_growth(growth, s.name.c_str(), sizes, times, "the sizes that finished");
-    print_growth(growth, s.name.c_str(), large_sizes, large_times, "the sizes above large_mesh_faces that finished");
+    series.print(growth, s.name);
   }
   std::cout << growth.str();
   return EXIT_SUCCESS;

@@ -562,9 +562,15 @@ int run(const Options& o)
     std::cerr << "[k_set_tilable] " << mirrored << " of " << num_faces(mesh)
               << " panels are cut from a mirrored mold\n";
   }
+  std::cerr << "[k_set_tilable] " << (result.is_tilable() ? "tilable" : "NOT tilable") << ", "
+            << m.self_intersecting_face_pairs << " crossing panel pairs, " << m.flattened_panels
+            << " flattened panels, " << m.number_of_distinct_molds << " distinct molds for K = " << m.number_of_clusters
+            << "\n";
+  for(const std::string& warning : TS::buildability_warnings(m))
+    std::cerr << "[k_set_tilable] WARNING: " << warning << "\n";
   if(!result.is_tilable())
   {
-    std::cerr << "[k_set_tilable] WARNING: not every panel fits its mold "
+    std::cerr << "[k_set_tilable] not every panel fits its mold "
               << (m.requires_planar_tiles ? "and is planar " : "")
               << "within 1e-6 of the mean edge length; see the report's per-cluster congruence errors\n";
     if(result.optimization.stalled)
@@ -582,8 +588,7 @@ int run(const Options& o)
               << " s) ended the search: the result is the best found by then"
               << (result.is_tilable() ? "" : "; a longer --time-limit may make it tilable") << "\n";
   if(m.self_intersecting_face_pairs > 0)
-    std::cerr << "[k_set_tilable] WARNING: the result crosses itself (" << m.self_intersecting_face_pairs
-              << " pairs of panels intersect); it cannot be built as it is: try a larger K\n";
+    std::cerr << "[k_set_tilable] a larger K may untangle the crossing panels\n";
   return 0;
 }
 

@@ -190,7 +190,7 @@ TEST(CommandLine, SwissReTowerEndToEnd) { check_run_on("swiss_re.off", 24, "json
 
 // 6-sub-lifted at K = 7 (DOF 3) has no exact solution near the input: every
 // candidate and a local-global projection of its clustering stall near 5e-2
-// (results.md, stops 14 and 25). The panels of the PLY must not fit their
+// (results.md, Known limits 2). The panels of the PLY must not fit their
 // molds, and the program must say that the solver stalled, not that it ran
 // out of iterations (the default gives it 300), after repair rounds.
 TEST(CommandLine, SaysWhenNoExactSolutionIsNearTheInput)

@@ -3,6 +3,7 @@
 #include <CGAL/Tilable_surfaces/cluster_editing.h>
 #include <CGAL/Tilable_surfaces/cluster_panels.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/fast_match.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/twist_separation.h>
 #include <CGAL/Tilable_surfaces/internal/canonical_face_order.h>
 
 #include <CGAL/Simple_cartesian.h>
@@ -551,6 +552,59 @@ TEST(ClusterQuads, DescriptorPathOnALargerGrid)
   EXPECT_EQ(r.path, TS::DESCRIPTOR_PATH);
   EXPECT_EQ(number_of_clusters(m, mp), 50u);
   EXPECT_EQ(r.degree_of_flexibility, brute_force_dof(m, mp, 50));
+}
+
+// The sheet z = a (y - 1) (4 - |x - 4|) over [0, 8] x [0, 4], cut into 1 x 2
+// rectangles (8 columns, 2 rows), every face labelled from its corner of
+// least x and y, counterclockwise: z_xy is +a left of x = 4 and -a right of
+// it, so det[v1 - v0, v2 - v0, v3 - v0] = -4 z_xy is -0.2 on the left and
+// +0.2 on the right, in every face's own labelling. A 1 x 2 rectangle matches
+// another only by correspondences that keep the sign of the signed volume
+// (shifts by 0 or 2, the reversals i -> 1 - i and i -> 3 - i), so the left
+// and right faces cannot share a mold without flattening. Clustered by rows,
+// both clusters mix twists; the twist separation must end with K = 2
+// clusters, each of one sign: the left half and the right half (a left face
+// of one row is nearer the left faces of the other row than any right face
+// it may join).
+TEST(TwistSeparation, ClustersByRowsBecomeTheTwoHalves)
+{
+  const double a = 0.05;
+  auto height = [&](double x, double y) { return a * (y - 1) * (4 - std::abs(x - 4)); };
+  std::vector<TS::Panel> quads;
+  for(int row = 0; row < 2; ++row)
+    for(int column = 0; column < 8; ++column)
+    {
+      TS::Panel q;
+      const double x[4] = {double(column), column + 1.0, column + 1.0, double(column)};
+      const double y[4] = {2.0 * row, 2.0 * row, 2.0 * row + 2, 2.0 * row + 2};
+      for(int i = 0; i < 4; ++i) q[i] = Eigen::Vector3d(x[i], y[i], height(x[i], y[i]));
+      quads.push_back(q);
+    }
+  auto twist = [&](std::size_t f) {
+    const TS::Panel& q = quads[f];
+    Eigen::Matrix3d m;
+    m << q[1] - q[0], q[2] - q[0], q[3] - q[0];
+    return m.determinant();
+  };
+  std::vector<std::size_t> by_rows(16);
+  for(std::size_t f = 0; f < 16; ++f)
+  {
+    by_rows[f] = f / 8;
+    ASSERT_GT(std::abs(twist(f)), 0.01) << "face " << f;
+  }
+  const std::vector<std::size_t> separated =
+    TS::internal::Twist_separation(quads, TS::PROPER_RIGID_MOTIONS)(by_rows, 2);
+  ASSERT_EQ(separated.size(), 16u);
+  for(std::size_t f = 0; f < 16; ++f)
+  {
+    const bool left = f % 8 < 4;
+    EXPECT_NEAR(twist(f), left ? -4 * a : 4 * a, 1e-12) << "face " << f;
+    EXPECT_EQ(separated[f] == separated[0], left) << "face " << f;
+  }
+  // A clustering that keeps the signs apart is left as it is (no candidate).
+  std::vector<std::size_t> halves(16);
+  for(std::size_t f = 0; f < 16; ++f) halves[f] = f % 8 < 4 ? 0 : 1;
+  EXPECT_TRUE(TS::internal::Twist_separation(quads, TS::PROPER_RIGID_MOTIONS)(halves, 2).empty());
 }
 
 } // namespace test_cluster_panels_unit

@@ -251,4 +251,57 @@ TEST(Measure, CongruentSQuadsAreOneMold)
   }
 }
 
+// By hand: the first of two unit squares with its corner (0, 1) lifted by
+// 0.2 has det[b - a, c - a, d - a] = 0.2 over a mean edge of
+// (3 + sqrt(1.04)) / 4, a relative twist of about 0.197; the same mesh with
+// that corner back at z = 0 has both squares planar. Measured against the
+// lifted input, the planar result flattened one quad of two (the second
+// square is planar in both, so it does not count), which is at least a tenth
+// of the faces: the only warning. The lifted mesh measured against itself
+// flattened none.
+TEST(Measure, FlattenedPanelsAreCountedAndWarnedAbout)
+{
+  Mesh flat = two_squares();
+  Mesh lifted = flat;
+  for(auto v : vertices(lifted))
+    if(lifted.point(v) == Point(0, 1, 0))
+      lifted.point(v) = Point(0, 1, 0.2);
+  const Clustering c = single_cluster(flat);
+  const TS::Tilability_measure m = TS::measure_tilability(flat, lifted, clustering_parameters(c));
+  EXPECT_EQ(m.flattened_panels, 1u);
+  const std::vector<std::string> warnings = TS::buildability_warnings(m);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("1 of 2 panels were flattened"), std::string::npos) << warnings[0];
+
+  const Clustering own = single_cluster(lifted);
+  EXPECT_EQ(TS::measure_tilability(lifted, lifted, clustering_parameters(own)).flattened_panels, 0u);
+}
+
+// Three unit squares in a row, each its own cluster: K = 3 and one distinct
+// mold, fewer than half of K, which is warned about; two squares in two
+// clusters (one mold of K = 2, half of K) are not.
+TEST(Measure, FewerMoldsThanHalfOfKAreWarnedAbout)
+{
+  Mesh three = two_squares();
+  const Vertex g = three.add_vertex(Point(3, 0, 0)), h = three.add_vertex(Point(3, 1, 0));
+  Vertex e, f;
+  for(auto v : vertices(three))
+  {
+    if(three.point(v) == Point(2, 0, 0)) e = v;
+    if(three.point(v) == Point(2, 1, 0)) f = v;
+  }
+  three.add_face(e, g, h, f);
+  const Clustering c = every_face_alone(three);
+  const TS::Tilability_measure m = TS::measure_tilability(three, three, clustering_parameters(c));
+  ASSERT_EQ(m.number_of_clusters, 3u);
+  ASSERT_EQ(m.number_of_distinct_molds, 1u);
+  const std::vector<std::string> warnings = TS::buildability_warnings(m);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("only 1 distinct molds for K = 3"), std::string::npos) << warnings[0];
+
+  Mesh two = two_squares();
+  const Clustering alone = every_face_alone(two);
+  EXPECT_TRUE(TS::buildability_warnings(TS::measure_tilability(two, two, clustering_parameters(alone))).empty());
+}
+
 } // namespace test_measure_unit

@@ -24,6 +24,7 @@
 #include <CGAL/Tilable_surfaces/internal/Clustering/initial_clustering.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/merge_costs.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/strip_candidates.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/twist_separation.h>
 #include <CGAL/Tilable_surfaces/internal/tuning.h>
 
 #include <CGAL/Random.h>
@@ -220,6 +221,7 @@ Clustering_settings clustering_settings(const NP& np)
     choose_parameter(get_parameter(np, TS_np::exact_clustering_limit), defaults::exact_clustering_limit);
   s.policy = choose_parameter(get_parameter(np, TS_np::orientation_policy), defaults::orientation_policy);
   s.seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), defaults::random_seed);
+  s.separate_twists = !choose_parameter(get_parameter(np, TS_np::planar_tiles), defaults::planar_tiles);
   return s;
 }
 
@@ -332,12 +334,26 @@ private:
     {
       ends_search = ends_search || (candidate.has_exact_start && m_settings.sweep_ends_search &&
                                     m_settings.sweep_ends_search(candidate.label));
+      pool_twist_separation(result, candidate.label);
       if(origin_traits(candidate.origin).solved_first_from_start)
         pooled_last.push_back(std::move(candidate));
       else
         pool(result, candidate);
     }
     return !ends_search;
+  }
+
+  // Pools the twist separation of `label` (twist_separation.h) when a
+  // cluster of it mixes twists and planar panels are not asked for.
+  void pool_twist_separation(Clustering_result& result, const std::vector<std::size_t>& label)
+  {
+    if(!m_settings.separate_twists || m_k <= 1)
+      return;
+    Generated_candidate separated;
+    separated.origin = Clustering_candidate::TWIST_SEPARATED;
+    separated.label = Twist_separation(m_quads, m_settings.policy)(label, m_k);
+    if(!separated.label.empty())
+      pool(result, separated);
   }
 
   Context generator_context()

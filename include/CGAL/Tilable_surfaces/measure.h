@@ -23,6 +23,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <algorithm>
+#include <string>
 #include <vector>
 
 namespace CGAL {
@@ -114,6 +115,16 @@ struct Tilability_measure
   /// its congruence error and its distance to the input: a tube folded flat
   /// stays within two radii of its input.
   std::size_t self_intersecting_face_pairs = 0;
+  /// The number of quads the result flattened: twisted in the input (a
+  /// `relative_twist()` of magnitude at least `flattening_input_twist`) and
+  /// left with at most `flattening_fraction` of that twist. A surface whose
+  /// twisted quads became planar to be congruent has changed its shape, even
+  /// when it stays near the input.
+  std::size_t flattened_panels = 0;
+  /// The input twist magnitude from which a quad counts in `flattened_panels`.
+  static constexpr double flattening_input_twist = 0.01;
+  /// The fraction of its input twist below which such a quad is flattened.
+  static constexpr double flattening_fraction = 0.1;
   /// `fraction` (of the bounding-box diagonal, as the distances above) in
   /// mean edge lengths of the input.
   double in_input_edge_lengths(double fraction) const
@@ -159,6 +170,37 @@ struct Tile
 };
 
 /// \ingroup PkgTilableSurfacesRef
+/// What keeps the measured result from being built as the design, one
+/// sentence each: not tilable (congruence error above `congruence_tolerance`),
+/// crossing itself, a part of its quads flattened (at least
+/// `flattened_warning_fraction` of the faces, see
+/// `Tilability_measure::flattened_panels`), and fewer distinct molds than
+/// half of K (the clusters collapsed onto the same shapes: the surface is
+/// made of fewer shapes than it could have). Empty for a result to build.
+inline std::vector<std::string> buildability_warnings(const Tilability_measure& m,
+                                                      double congruence_tolerance = defaults::congruence_tolerance,
+                                                      double flattened_warning_fraction = 0.1)
+{
+  std::vector<std::string> w;
+  std::size_t faces = 0;
+  for(std::size_t n : m.cluster_sizes) faces += n;
+  if(m.congruence_error > congruence_tolerance)
+    w.push_back("not tilable: the congruence error " + std::to_string(m.congruence_error) +
+                " (mean edge lengths) is above the tolerance " + std::to_string(congruence_tolerance));
+  if(m.self_intersecting_face_pairs > 0)
+    w.push_back("the result crosses itself: " + std::to_string(m.self_intersecting_face_pairs) +
+                " pairs of panels intersect; it cannot be built as it is");
+  if(faces > 0 && double(m.flattened_panels) >= flattened_warning_fraction * double(faces))
+    w.push_back(std::to_string(m.flattened_panels) + " of " + std::to_string(faces) +
+                " panels were flattened (twisted in the input, planar in the result): the surface changed its "
+                "shape to make them congruent");
+  if(2 * m.number_of_distinct_molds < m.number_of_clusters)
+    w.push_back("only " + std::to_string(m.number_of_distinct_molds) + " distinct molds for K = " +
+                std::to_string(m.number_of_clusters) + ": clusters collapsed onto the same shapes");
+  return w;
+}
+
+/// \ingroup PkgTilableSurfacesRef
 /// The tile catalog of a measurement: one `Tile` per S-quad, with the
 /// measured worst deviation of its instances, in the mesh's units. The IO
 /// functions of `IO/tile_catalog.h` write it as CSV or JSON.
@@ -178,6 +220,22 @@ inline std::vector<Tile> tile_catalog(const Tilability_measure& m)
 }
 
 namespace internal {
+
+// The quads of `result` flattened from `input` (Tilability_measure::flattened_panels).
+inline std::size_t flattened_panels(const Tilable_problem& problem, const Point_matrix& input,
+                                    const Point_matrix& result)
+{
+  std::size_t flattened = 0;
+  for(std::size_t f = 0; f < problem.face_corners.size(); ++f)
+  {
+    const double before = std::abs(relative_twist(instance(problem, input, f)));
+    const double after = std::abs(relative_twist(instance(problem, result, f)));
+    if(before >= Tilability_measure::flattening_input_twist &&
+       after <= Tilability_measure::flattening_fraction * before)
+      ++flattened;
+  }
+  return flattened;
+}
 
 // The measurements on arrays; `D` is the fairness operator of the mesh.
 inline Tilability_measure measure_tilability(const Tilable_problem& problem,
@@ -221,6 +279,7 @@ inline Tilability_measure measure_tilability(const Tilable_problem& problem,
   m.hausdorff_distance = (std::max)(m.max_approximation_error, m.max_coverage_error);
   m.mean_symmetric_distance = 0.5 * (m.mean_approximation_error + m.mean_coverage_error);
   m.self_intersecting_face_pairs = self_intersecting_face_pairs(problem, result);
+  m.flattened_panels = flattened_panels(problem, input, result);
 
   const Eigen::VectorXd displacement = (result - input).rowwise().norm();
   m.max_displacement = displacement.maxCoeff();

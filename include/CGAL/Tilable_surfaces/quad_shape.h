@@ -268,6 +268,21 @@ inline double signed_volume(const Panel& q)
 }
 
 /// \ingroup PkgTilableSurfacesRef
+/// The twist of a quad without its scale: 6 x `signed_volume()` over the cube
+/// of its mean edge length (0 for a planar quad and for a triangle). Its sign
+/// depends on the labelling as the signed volume's does; congruence under a
+/// proper rigid motion keeps it, so quads twisted opposite ways in their
+/// S-quad's labelling become congruent only by flattening.
+inline double relative_twist(const Panel& q)
+{
+  if(q.is_triangle())
+    return 0;
+  const std::array<double, 4> e = edge_lengths(q);
+  const double mean = (e[0] + e[1] + e[2] + e[3]) / 4;
+  return mean > 0 ? 6 * signed_volume(q) / (mean * mean * mean) : 0.0;
+}
+
+/// \ingroup PkgTilableSurfacesRef
 /// Distance of t3 to the plane through t0, t1, t2: 0 for a planar quad and
 /// for a triangle. When t0, t1, t2 are (nearly) collinear, the largest of the
 /// four corner triangles is taken as the base instead, so the value stays

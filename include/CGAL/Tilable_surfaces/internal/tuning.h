@@ -188,6 +188,18 @@ constexpr std::size_t split_segment_candidates = 4;
 // the ranked ones (origin_traits()): grids gain from their structure more
 // than the prediction ranks.
 constexpr std::size_t grid_segment_extra_quota_divisor = 4;
+// Twist separation (twist_separation.h): a cluster mixes twists when some
+// of its quads twist beyond this fraction of its largest twist one way and
+// some the other way...
+constexpr double twist_sign_fraction = 0.05;
+// ... and beyond this relative twist (6 x signed volume / mean edge^3): a
+// flatter quad is planar as far as its mold is concerned.
+constexpr double planar_twist = 1e-3;
+// The search optimizes ceil(optimized / this) twist-separated candidates,
+// in pool order, beside the ranked candidates of the other origins, which
+// they do not displace: they keep their shape where they can be solved, but
+// lower the DOF and stall more often.
+constexpr std::size_t twist_separated_extra_quota_divisor = 4;
 // Canonical face order: start faces whose distances to the centroid differ
 // by at most this relative amount tie (round-off), the larger face first.
 constexpr double canonical_start_tie = 1e-9;

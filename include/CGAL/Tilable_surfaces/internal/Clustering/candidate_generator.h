@@ -55,6 +55,8 @@ struct Candidate_origin_traits
                                   // generator made, and does not rank it (true for sweeps only)
   std::size_t extra_quota_divisor;// after the ranked candidates, ceil(optimized / divisor) more of this
                                   // origin are optimized, in pool order (4 for grid segments; 0: none)
+  bool ranked;                    // competes for the places of the ranking; if not, it is optimized
+                                  // through its extra quota only, beside the candidates of the others
 };
 
 // The traits of the candidates of `origin` (defined in candidate_generators.h).
@@ -67,6 +69,7 @@ struct Clustering_settings
   double relative_threshold;  // similarity_threshold
   double lambda, mu;          // flexibility_penalty, structure_penalty
   bool use_kmeans, auto_merge, use_strips, use_segments;
+  bool separate_twists;       // not with planar_tiles: twist-separated variants join the pool
   Clustering_path path;
   std::size_t exact_limit;
   Orientation_policy policy;

@@ -32,12 +32,16 @@ namespace Tilable_surfaces {
 /// molds or a band of one mold, with K molds, or with fewer and their
 /// largest clusters split by shape until K (user manual, section
 /// TS_Fidelity).
+/// `TWIST_SEPARATED`: a candidate of another origin whose clusters mixing
+/// quads twisted both ways are split by the sign of the twist, then merged
+/// back to K clusters that each keep one sign (user manual, section
+/// TS_Candidate_generators).
 /// `GRID_SWEEPS`: every column of a run of rows of a quad grid is one
 /// cluster; such a clustering is exact on a swept surface built directly
 /// (user manual, section TS_Sweeps). These are never the configuration
 /// `cluster_panels()` returns; `K_set_tilable_surface::optimize_closest()`
 /// solves them first, from that surface.
-enum Candidate_origins::Origin : int { HIERARCHICAL, KMEANS, QUAD_STRIPS, GRID_SEGMENTS, GRID_SWEEPS };
+enum Candidate_origins::Origin : int { HIERARCHICAL, KMEANS, QUAD_STRIPS, GRID_SEGMENTS, GRID_SWEEPS, TWIST_SEPARATED };
 
 namespace internal {
 
@@ -45,12 +49,13 @@ namespace internal {
 inline const Candidate_origin_traits& origin_traits(Candidate_origins::Origin origin)
 {
   static const Candidate_origin_traits traits[] = {
-    // name, selectable_by_score, solved_first_from_start, extra_quota_divisor
-    {"hierarchical", true, false, 0},
-    {"k-means", true, false, 0},
-    {"quad-strip", true, false, 0},
-    {"grid-segment", true, false, tuning::grid_segment_extra_quota_divisor},
-    {"sweep", false, true, 0}};
+    // name, selectable_by_score, solved_first_from_start, extra_quota_divisor, ranked
+    {"hierarchical", true, false, 0, true},
+    {"k-means", true, false, 0, true},
+    {"quad-strip", true, false, 0, true},
+    {"grid-segment", true, false, tuning::grid_segment_extra_quota_divisor, true},
+    {"sweep", false, true, 0, false},
+    {"twist-separated", true, false, tuning::twist_separated_extra_quota_divisor, false}};
   return traits[origin];
 }
 

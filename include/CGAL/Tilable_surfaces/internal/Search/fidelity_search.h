@@ -217,7 +217,7 @@ private:
     for(std::size_t i = 0; i < pool().size(); ++i)
     {
       const Clustering_candidate& candidate = pool()[i];
-      if(origin_traits(candidate.origin).solved_first_from_start)
+      if(!origin_traits(candidate.origin).ranked)
         continue;
       by_prediction.push_back({candidate.predicted_displacement, i});
       by_spread.push_back({candidate.length_deviation, i});
@@ -266,7 +266,7 @@ private:
     std::vector<Clustering_candidate>& pool = m_state.clustering.candidates;
     with_concurrency([&] {
       internal::parallel_for(pool.size(), [&](std::size_t i) {
-        if(origin_traits(pool[i].origin).solved_first_from_start)
+        if(!origin_traits(pool[i].origin).ranked)
           return;
         std::size_t unused_dof;
         pool[i].predicted_displacement = m_solver.predicted_displacement(m_solver.candidate_model(i, unused_dof), m_np);

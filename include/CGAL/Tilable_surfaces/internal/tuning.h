@@ -188,6 +188,17 @@ constexpr std::size_t split_segment_candidates = 4;
 // the ranked ones (origin_traits()): grids gain from their structure more
 // than the prediction ranks.
 constexpr std::size_t grid_segment_extra_quota_divisor = 4;
+// Patch-segment candidates (patch_candidates.h): a twist (signed volume)
+// below this fraction of the largest of a cluster is no sign: near-planar
+// quads fit either way.
+constexpr double patch_twist_significance = 0.05;
+// Patch-segment candidates: the molds spread over the patches, times K, one
+// candidate each; the merges across patches bring them to K.
+constexpr std::size_t patch_mold_factors[3] = {1, 2, 4};
+// The search optimizes ceil(optimized / this) patch-segment candidates
+// beyond the ranked ones: as for grid segments, the patches' structure is
+// worth more than the prediction ranks.
+constexpr std::size_t patch_segment_extra_quota_divisor = 4;
 // Canonical face order: start faces whose distances to the centroid differ
 // by at most this relative amount tie (round-off), the larger face first.
 constexpr double canonical_start_tie = 1e-9;

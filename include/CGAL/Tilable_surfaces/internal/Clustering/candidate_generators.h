@@ -16,6 +16,7 @@
 
 #include <CGAL/Tilable_surfaces/internal/Clustering/beam_search.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/kmeans_generator.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/patch_candidates.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/segment_candidates.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/strip_generator.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/sweep_candidates.h>
@@ -37,7 +38,10 @@ namespace Tilable_surfaces {
 /// (user manual, section TS_Sweeps). These are never the configuration
 /// `cluster_panels()` returns; `K_set_tilable_surface::optimize_closest()`
 /// solves them first, from that surface.
-enum Candidate_origins::Origin : int { HIERARCHICAL, KMEANS, QUAD_STRIPS, GRID_SEGMENTS, GRID_SWEEPS };
+/// `PATCH_SEGMENTS`: on a quad mesh that is not one grid, the grid segments
+/// of every patch of its quad layout, with molds shared across patches whose
+/// panels agree, never mixing quads twisted both ways.
+enum Candidate_origins::Origin : int { HIERARCHICAL, KMEANS, QUAD_STRIPS, GRID_SEGMENTS, GRID_SWEEPS, PATCH_SEGMENTS };
 
 namespace internal {
 
@@ -50,7 +54,8 @@ inline const Candidate_origin_traits& origin_traits(Candidate_origins::Origin or
     {"k-means", true, false, 0},
     {"quad-strip", true, false, 0},
     {"grid-segment", true, false, tuning::grid_segment_extra_quota_divisor},
-    {"sweep", false, true, 0}};
+    {"sweep", false, true, 0},
+    {"patch-segment", true, false, tuning::patch_segment_extra_quota_divisor}};
   return traits[origin];
 }
 
@@ -69,7 +74,7 @@ typedef Generator_list<Hierarchical_generator> Merge_generators;
 // holds the candidates in this order, those solved first from their start
 // last.
 typedef Generator_list<Sweep_generator, Kmeans_generator, Quad_strip_generator, Grid_segment_generator,
-                       Split_segment_generator>
+                       Split_segment_generator, Patch_segment_generator>
   Other_generators;
 
 } // namespace internal

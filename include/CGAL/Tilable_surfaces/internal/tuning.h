@@ -192,6 +192,11 @@ constexpr std::size_t grid_segment_extra_quota_divisor = 4;
 // below this fraction of the largest of a cluster is no sign: near-planar
 // quads fit either way.
 constexpr double patch_twist_significance = 0.05;
+// Patch-segment candidates: passes of twist splits and merges at most; a
+// merge judges twists in the labelling its clusters had before it, so the
+// next pass checks them in that of the merged S-quads (a candidate that
+// still mixes them after the last pass is left out).
+constexpr int patch_twist_passes = 4;
 // Patch-segment candidates: the molds spread over the patches, times K, one
 // candidate each; the merges across patches bring them to K.
 constexpr std::size_t patch_mold_factors[3] = {1, 2, 4};

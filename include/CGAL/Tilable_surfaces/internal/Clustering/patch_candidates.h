@@ -13,13 +13,15 @@
 //    molds of least spread (Run_partitions), for every m.
 // 2. M molds in all are spread over the patches by that spread: one each,
 //    then each further mold where it lowers the spread most per mold.
-// 3. A patch cluster whose quads are twisted both ways (signed volume
-//    det[t1 - t0, t2 - t0, t3 - t0] in its common labelling, of opposite
-//    signs, both above tuning::patch_twist_significance of the largest) is
-//    split by sign: such quads can only become congruent by flattening.
+// 3. A cluster whose quads are twisted both ways (signed volume
+//    det[t1 - t0, t2 - t0, t3 - t0] in the labelling of its S-quad, the one
+//    the optimization pairs corners by, of opposite signs, both above
+//    tuning::patch_twist_significance of the largest) is split by sign:
+//    such quads can only become congruent by flattening.
 // 4. The clusters are merged across patches, least increase of the spread
 //    of their six corner distances first (Ward's criterion, each pair in its
-//    best corner correspondence), never mixing twist signs, down to K.
+//    best corner correspondence), never mixing twist signs, down to K;
+//    steps 3 and 4 repeat until no cluster mixes twists.
 // The candidates differ by M (tuning::patch_mold_factors times K, at least
 // one mold per patch): more molds per patch keep more of each patch's
 // structure and share more across patches.
@@ -150,16 +152,21 @@ public:
 
   // The clustering with k clusters from `molds` molds spread over the
   // patches (at least one each), or an empty vector when the layout has a
-  // patch that is not a grid, or fewer than 2 patches.
+  // patch that is not a grid, or fewer than 2 patches, or when the twists
+  // of its clusters still mix after tuning::patch_twist_passes passes.
   std::vector<std::size_t> clustering(std::size_t molds) const
   {
     if(m_runs.size() < 2)
       return std::vector<std::size_t>();
     std::vector<std::size_t> label = patch_labels(spread(molds));
-    split_twists(label);
-    merge_to_k(label);
-    relabel_by_first_face(label);
-    return label;
+    for(int pass = 0; pass < tuning::patch_twist_passes; ++pass)
+    {
+      const std::vector<Panel> labelled = labelled_panels(label);
+      if(!split_twists(label, labelled) && relabel_by_first_face(label) <= m_k)
+        return label;
+      merge_to_k(label, labelled);
+    }
+    return std::vector<std::size_t>();
   }
 
 private:
@@ -225,33 +232,37 @@ private:
     return label;
   }
 
-  // Each face in the labelling of its cluster's first face, by best match.
-  std::vector<Panel> labelled_panels(const std::vector<std::size_t>& label) const
+  // Each face in the labelling of its cluster's S-quad (cluster_shapes()),
+  // the one the optimization pairs its corners by.
+  std::vector<Panel> labelled_panels(std::vector<std::size_t>& label) const
   {
-    std::vector<std::size_t> first(label.size(), no_index());
-    for(std::size_t f = 0; f < label.size(); ++f)
-      if(first[label[f]] == no_index())
-        first[label[f]] = f;
+    const std::size_t clusters = relabel_by_first_face(label);
+    const Cluster_shapes shapes = cluster_shapes(m_panels, label, clusters, m_policy);
     std::vector<Panel> labelled(label.size());
-    parallel_for(label.size(), [&](std::size_t f) {
-      const Panel_orientation o = fast_best_match(m_panels[first[label[f]]], m_panels[f], m_policy).orientation;
-      labelled[f] = reoriented(m_panels[f], o);
-    });
+    for(std::size_t f = 0; f < label.size(); ++f)
+      labelled[f] = reoriented(m_panels[f], shapes.orientation[f]);
     return labelled;
+  }
+
+  // The sums of the clusters of `label`, numbered from 0, with each face
+  // as in `labelled`.
+  static std::vector<Mold_sum> mold_sums(const std::vector<std::size_t>& label, const std::vector<Panel>& labelled)
+  {
+    std::vector<Mold_sum> sum(*std::max_element(label.begin(), label.end()) + 1);
+    for(std::size_t f = 0; f < label.size(); ++f)
+      sum[label[f]].add(labelled[f]);
+    return sum;
   }
 
   // Clusters that mix twist signs (Mold_sum::mixes_twists()) split by sign:
   // the quads twisted against the larger sign, beyond the significance,
   // form a cluster of their own.
-  void split_twists(std::vector<std::size_t>& label) const
+  // Whether any was split.
+  static bool split_twists(std::vector<std::size_t>& label, const std::vector<Panel>& labelled)
   {
-    const std::vector<Panel> labelled = labelled_panels(label);
-    const std::size_t clusters = relabel_by_first_face(label);
-    std::vector<Mold_sum> sum(clusters);
-    for(std::size_t f = 0; f < label.size(); ++f)
-      sum[label[f]].add(labelled[f]);
-    std::vector<std::size_t> opposite(clusters, no_index());
-    std::size_t next = clusters;
+    const std::vector<Mold_sum> sum = mold_sums(label, labelled);
+    std::vector<std::size_t> opposite(sum.size(), no_index());
+    std::size_t next = sum.size();
     for(std::size_t f = 0; f < label.size(); ++f)
     {
       const Mold_sum& s = sum[label[f]];
@@ -266,17 +277,15 @@ private:
         label[f] = opposite[label[f]];
       }
     }
+    return next > sum.size();
   }
 
   // The clusters merged, least Ward increase first, never mixing twists,
-  // down to k (or as far as twists allow).
-  void merge_to_k(std::vector<std::size_t>& label) const
+  // down to k (or as far as twists allow), each face as in `labelled`.
+  void merge_to_k(std::vector<std::size_t>& label, const std::vector<Panel>& labelled) const
   {
-    const std::vector<Panel> labelled = labelled_panels(label);
-    const std::size_t clusters = relabel_by_first_face(label);
-    std::vector<Mold_sum> sum(clusters);
-    for(std::size_t f = 0; f < label.size(); ++f)
-      sum[label[f]].add(labelled[f]);
+    std::vector<Mold_sum> sum = mold_sums(label, labelled);
+    const std::size_t clusters = sum.size();
     std::vector<std::size_t> parent(clusters);
     for(std::size_t c = 0; c < clusters; ++c) parent[c] = c;
     std::vector<std::pair<double, Panel_orientation> > pair(clusters * clusters);

@@ -297,7 +297,9 @@ Quad_grid region_grid(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vp
     {
       const std::size_t i = grid.face_at[r * columns + c];
       halfedge_descriptor h = halfedge(face_of[faces[i]], pm);
-      if(columns > 1 && !shared_halfedge(i, grid.face_at[r * columns + (c + 1) % columns], h))
+      // Two columns are never a closed row: the first is the second's previous.
+      const bool has_next = c + 1 < columns || columns > 2;
+      if(columns > 1 && !(has_next && shared_halfedge(i, grid.face_at[r * columns + (c + 1) % columns], h)))
       {
         if(c + 1 < columns || !shared_halfedge(i, grid.face_at[r * columns + c - 1], h))
           return Quad_grid();

@@ -9,8 +9,9 @@
 //
 // A vertex is irregular when it has valence other than 4 inside, other than
 // 3 on the border (a corner of valence 2, a border vertex of valence 4 or
-// more). From every irregular vertex a separatrix is traced along each of
-// its inner edges, straight across regular inner vertices (on to the
+// more). From every irregular vertex and every vertex of a triangle (a
+// corner of the quads around it) a separatrix is traced along each of its
+// inner edges between quads, straight across regular inner vertices (on to the
 // opposite edge), and stops at the border, at an irregular vertex, at a
 // vertex of a triangle, or at a vertex an earlier trace has passed (the
 // motorcycle rule: traces end where they meet, so patches stay few and
@@ -128,7 +129,7 @@ private:
   {
     std::vector<halfedge_descriptor> traces;
     for(vertex_descriptor v : ranked_vertices())
-      if(is_irregular(v))
+      if(is_irregular(v) || has_triangle(v))
         for(halfedge_descriptor h : halfedges_around_source(v, m_pm))
           if(!is_border_edge(h, m_pm) && !is_cut(h))
             traces.push_back(h);

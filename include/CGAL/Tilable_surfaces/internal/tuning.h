@@ -192,11 +192,15 @@ constexpr std::size_t grid_segment_extra_quota_divisor = 4;
 // below this fraction of the largest of a cluster is no sign: near-planar
 // quads fit either way.
 constexpr double patch_twist_significance = 0.05;
-// Patch-segment candidates: passes of twist splits and merges at most; a
-// merge judges twists in the labelling its clusters had before it, so the
-// next pass checks them in that of the merged S-quads (a candidate that
-// still mixes them after the last pass is left out).
-constexpr int patch_twist_passes = 4;
+// Patch-segment candidates: a twist below this times the cube of the mean
+// edge length is no sign either: the quad is flat to 0.1% of its edge, and
+// its sign is round-off (planar meshes).
+constexpr double patch_flat_twist = 1e-3;
+// Patch-segment candidates: rounds of twist splits and merges, and splits
+// per round, at most. A split changes the S-quads, and with them the
+// labelling of near-symmetric quads, so splits repeat until none mixes; a
+// candidate that still mixes twists after the last round is left out.
+constexpr int patch_twist_passes = 8;
 // Patch-segment candidates: the molds spread over the patches, times K, one
 // candidate each; the merges across patches bring them to K.
 constexpr std::size_t patch_mold_factors[3] = {1, 2, 4};

@@ -65,11 +65,18 @@ struct Mold_sum
     double& largest = twist > 0 ? positive_twist : negative_twist;
     largest = (std::max)(largest, std::abs(twist));
   }
+  // The least twist that counts as a sign: tuning::patch_twist_significance
+  // of the largest, and at least a flat quad's (tuning::patch_flat_twist).
+  double significant_twist() const
+  {
+    const double edge = distances.head<4>().sum() / double(4 * count);
+    return (std::max)(tuning::patch_twist_significance * (std::max)(positive_twist, negative_twist),
+                      tuning::patch_flat_twist * edge * edge * edge);
+  }
   // Both signs significant: a mix that only flattening makes congruent.
   bool mixes_twists() const
   {
-    const double significant = tuning::patch_twist_significance * (std::max)(positive_twist, negative_twist);
-    return positive_twist > significant && negative_twist > significant;
+    return positive_twist > significant_twist() && negative_twist > significant_twist();
   }
   // With `other` in this labelling, `other` matched with orientation o.
   Mold_sum merged(const Mold_sum& other, Panel_orientation o) const
@@ -159,12 +166,14 @@ public:
     if(m_runs.size() < 2)
       return std::vector<std::size_t>();
     std::vector<std::size_t> label = patch_labels(spread(molds));
-    for(int pass = 0; pass < tuning::patch_twist_passes; ++pass)
+    for(int round = 0; round < tuning::patch_twist_passes; ++round)
     {
-      const std::vector<Panel> labelled = labelled_panels(label);
-      if(!split_twists(label, labelled) && relabel_by_first_face(label) <= m_k)
+      bool split = false;
+      for(int pass = 0; pass < tuning::patch_twist_passes && split_twists(label, labelled_panels(label)); ++pass)
+        split = true;
+      if(!split && relabel_by_first_face(label) <= m_k)
         return label;
-      merge_to_k(label, labelled);
+      merge_to_k(label);
     }
     return std::vector<std::size_t>();
   }
@@ -270,7 +279,7 @@ private:
         continue;
       const double twist = signed_volume(labelled[f]);
       const double larger = s.positive_twist >= s.negative_twist ? 1 : -1;
-      if(twist * larger < -tuning::patch_twist_significance * (std::max)(s.positive_twist, s.negative_twist))
+      if(twist * larger < -s.significant_twist())
       {
         if(opposite[label[f]] == no_index())
           opposite[label[f]] = next++;
@@ -280,19 +289,32 @@ private:
     return next > sum.size();
   }
 
-  // The clusters merged, least Ward increase first, never mixing twists,
-  // down to k (or as far as twists allow), each face as in `labelled`.
-  void merge_to_k(std::vector<std::size_t>& label, const std::vector<Panel>& labelled) const
+  // The sum of the quads `members`, each in the labelling of their S-quad.
+  Mold_sum shape_sum(const std::vector<std::size_t>& members) const
   {
-    std::vector<Mold_sum> sum = mold_sums(label, labelled);
-    const std::size_t clusters = sum.size();
+    const Panel s_quad = procrustes_mean(m_panels, members, m_policy);
+    Mold_sum sum;
+    for(std::size_t f : members)
+      sum.add(reoriented(m_panels[f], fast_best_match(s_quad, m_panels[f], m_policy).orientation));
+    return sum;
+  }
+
+  // The clusters merged, least Ward increase first, down to k (or as far as
+  // twists allow). A merge is kept when the merged quads, in the labelling
+  // of their S-quad, do not mix twists.
+  void merge_to_k(std::vector<std::size_t>& label) const
+  {
+    const std::size_t clusters = relabel_by_first_face(label);
+    std::vector<std::vector<std::size_t> > members = cluster_members(label, clusters);
+    std::vector<Mold_sum> sum(clusters);
+    parallel_for(clusters, [&](std::size_t c) { sum[c] = shape_sum(members[c]); });
     std::vector<std::size_t> parent(clusters);
     for(std::size_t c = 0; c < clusters; ++c) parent[c] = c;
     std::vector<std::pair<double, Panel_orientation> > pair(clusters * clusters);
     parallel_for(clusters, [&](std::size_t a) {
       for(std::size_t b = a + 1; b < clusters; ++b) pair[a * clusters + b] = best_merge(sum[a], sum[b]);
     });
-    for(std::size_t count = clusters; count > m_k; --count)
+    for(std::size_t count = clusters; count > m_k;)
     {
       std::size_t kept = 0, removed = 0;
       double least = (std::numeric_limits<double>::max)();
@@ -306,8 +328,16 @@ private:
           }
       if(least == (std::numeric_limits<double>::max)())
         break;
-      sum[kept] = sum[kept].merged(sum[removed], pair[kept * clusters + removed].second);
+      std::vector<std::size_t> both = members[kept];
+      both.insert(both.end(), members[removed].begin(), members[removed].end());
+      const Mold_sum merged = shape_sum(both);
+      pair[kept * clusters + removed].first = (std::numeric_limits<double>::max)();
+      if(merged.mixes_twists())
+        continue;
+      sum[kept] = merged;
+      members[kept].swap(both);
       parent[removed] = kept;
+      --count;
       for(std::size_t c = 0; c < clusters; ++c)
         if(parent[c] == c && c != kept)
           pair[(std::min)(c, kept) * clusters + (std::max)(c, kept)] =

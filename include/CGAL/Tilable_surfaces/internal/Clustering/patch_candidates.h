@@ -135,6 +135,9 @@ struct Patch_runs
   }
 };
 
+// The quad layout of a mesh with the runs of rows of each patch (both
+// layouts, rows along either direction of each patch's grid), and the
+// clusterings made from them (steps 2 to 4 above).
 template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
 class Patch_segment_clusterer
 {
@@ -144,8 +147,7 @@ public:
     : m_panels(panels), m_k(k), m_policy(policy)
   {
     const Quad_layout rows_first = quad_layout(pm, fim, vpm, 0), columns_first = quad_layout(pm, fim, vpm, 1);
-    m_patch_of_face = rows_first.patch_of_face;
-    m_faces = patch_faces(m_patch_of_face);
+    m_faces = patch_faces(rows_first.patch_of_face);
     const std::size_t most =
       (std::min)(panels.size(), k * *std::max_element(std::begin(tuning::patch_mold_factors),
                                                       std::end(tuning::patch_mold_factors)));
@@ -364,7 +366,6 @@ private:
   const std::vector<Panel>& m_panels;
   std::size_t m_k;
   Orientation_policy m_policy;
-  std::vector<std::size_t> m_patch_of_face;
   std::vector<std::vector<std::size_t> > m_faces;
   std::vector<std::unique_ptr<Patch_runs> > m_runs;
 };

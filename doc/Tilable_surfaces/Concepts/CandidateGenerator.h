@@ -49,6 +49,7 @@ solves it from.
 \cgalHasModel `Quad_strip_generator` (strip_generator.h)
 \cgalHasModel `Grid_segment_generator` (segment_candidates.h)
 \cgalHasModel `Split_segment_generator` (segment_candidates.h)
+\cgalHasModel `Patch_segment_generator` (patch_candidates.h)
 */
 class CandidateGenerator
 {

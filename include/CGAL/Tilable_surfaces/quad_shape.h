@@ -45,6 +45,9 @@ Eigen::Vector3d to_eigen(const Point_3& p)
   return Eigen::Vector3d(CGAL::to_double(p.x()), CGAL::to_double(p.y()), CGAL::to_double(p.z()));
 }
 
+// No index: an unset entry of an index table.
+inline std::size_t no_index() { return (std::numeric_limits<std::size_t>::max)(); }
+
 // At most N values kept in place (the edges of a face, the correspondences
 // of a panel), with what range-for loops and indexing need.
 template <typename T, std::size_t N>

@@ -188,7 +188,8 @@ constexpr std::size_t split_segment_candidates = 4;
 // the ranked ones (origin_traits()): grids gain from their structure more
 // than the prediction ranks.
 constexpr std::size_t grid_segment_extra_quota_divisor = 4;
-// Twist separation (twist_separation.h): a cluster mixes twists when some
+// Twist separation (twist_separation.h) and patch-segment candidates
+// (patch_candidates.h): a cluster mixes twists when some
 // of its quads twist beyond this fraction of its largest twist one way and
 // some the other way...
 constexpr double twist_sign_fraction = 0.05;
@@ -200,6 +201,18 @@ constexpr double planar_twist = 1e-3;
 // they do not displace: they keep their shape where they can be solved, but
 // lower the DOF and stall more often.
 constexpr std::size_t twist_separated_extra_quota_divisor = 4;
+// Patch-segment candidates: rounds of twist splits and merges, and splits
+// per round, at most. A split changes the S-quads, and with them the
+// labelling of near-symmetric quads, so splits repeat until none mixes; a
+// candidate that still mixes twists after the last round is left out.
+constexpr int patch_twist_passes = 8;
+// Patch-segment candidates: the molds spread over the patches, times K, one
+// candidate each; the merges across patches bring them to K.
+constexpr std::size_t patch_mold_factors[3] = {1, 2, 4};
+// The search optimizes ceil(optimized / this) patch-segment candidates
+// beyond the ranked ones: as for grid segments, the patches' structure is
+// worth more than the prediction ranks.
+constexpr std::size_t patch_segment_extra_quota_divisor = 4;
 // Canonical face order: start faces whose distances to the centroid differ
 // by at most this relative amount tie (round-off), the larger face first.
 constexpr double canonical_start_tie = 1e-9;

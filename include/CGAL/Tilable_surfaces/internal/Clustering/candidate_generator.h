@@ -49,7 +49,7 @@ namespace internal {
 struct Candidate_origin_traits
 {
   const char* name;               // as in the choice strings and reports: "hierarchical", "k-means",
-                                  // "quad-strip", "grid-segment", "sweep"
+                                  // "quad-strip", "grid-segment", "sweep", "patch-segment"
   bool selectable_by_score;       // may be cluster_panels()'s chosen candidate (false for sweeps)
   bool solved_first_from_start;   // the fidelity search solves it first, from the exact start its
                                   // generator made, and does not rank it (true for sweeps only)

@@ -16,6 +16,7 @@
 
 #include <CGAL/Tilable_surfaces/internal/Clustering/beam_search.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/kmeans_generator.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/patch_candidates.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/segment_candidates.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/strip_generator.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/sweep_candidates.h>
@@ -32,16 +33,21 @@ namespace Tilable_surfaces {
 /// molds or a band of one mold, with K molds, or with fewer and their
 /// largest clusters split by shape until K (user manual, section
 /// TS_Fidelity).
-/// `TWIST_SEPARATED`: a candidate of another origin whose clusters mixing
-/// quads twisted both ways are split by the sign of the twist, then merged
-/// back to K clusters that each keep one sign (user manual, section
-/// TS_Candidate_generators).
 /// `GRID_SWEEPS`: every column of a run of rows of a quad grid is one
 /// cluster; such a clustering is exact on a swept surface built directly
 /// (user manual, section TS_Sweeps). These are never the configuration
 /// `cluster_panels()` returns; `K_set_tilable_surface::optimize_closest()`
 /// solves them first, from that surface.
-enum Candidate_origins::Origin : int { HIERARCHICAL, KMEANS, QUAD_STRIPS, GRID_SEGMENTS, GRID_SWEEPS, TWIST_SEPARATED };
+/// `TWIST_SEPARATED`: a candidate of another origin whose clusters mixing
+/// quads twisted both ways are split by the sign of the twist, then merged
+/// back to K clusters that each keep one sign (user manual, section
+/// TS_Candidate_generators).
+/// `PATCH_SEGMENTS`: on a quad mesh that is not one grid, the grid segments
+/// of every patch of its quad layout, with molds shared across patches whose
+/// panels agree, never mixing quads twisted both ways.
+enum Candidate_origins::Origin : int {
+  HIERARCHICAL, KMEANS, QUAD_STRIPS, GRID_SEGMENTS, GRID_SWEEPS, TWIST_SEPARATED, PATCH_SEGMENTS
+};
 
 namespace internal {
 
@@ -55,7 +61,8 @@ inline const Candidate_origin_traits& origin_traits(Candidate_origins::Origin or
     {"quad-strip", true, false, 0, true},
     {"grid-segment", true, false, tuning::grid_segment_extra_quota_divisor, true},
     {"sweep", false, true, 0, false},
-    {"twist-separated", true, false, tuning::twist_separated_extra_quota_divisor, false}};
+    {"twist-separated", true, false, tuning::twist_separated_extra_quota_divisor, false},
+    {"patch-segment", true, false, tuning::patch_segment_extra_quota_divisor, true}};
   return traits[origin];
 }
 
@@ -74,7 +81,7 @@ typedef Generator_list<Hierarchical_generator> Merge_generators;
 // holds the candidates in this order, those solved first from their start
 // last.
 typedef Generator_list<Sweep_generator, Kmeans_generator, Quad_strip_generator, Grid_segment_generator,
-                       Split_segment_generator>
+                       Split_segment_generator, Patch_segment_generator>
   Other_generators;
 
 } // namespace internal

@@ -29,8 +29,6 @@ struct Initial_clustering
   std::vector<std::size_t> leaders;             // per cluster, increasing
 };
 
-inline std::size_t no_index() { return (std::numeric_limits<std::size_t>::max)(); }
-
 // Returns false, leaving `out` incomplete, as soon as more than
 // `max_clusters` clusters would be needed.
 inline bool leader_clustering(const std::vector<Panel>& quads,

@@ -32,6 +32,7 @@
 
 #include <CGAL/Tilable_surfaces/internal/Clustering/fast_match.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/strip_candidates.h>
+#include <CGAL/Tilable_surfaces/internal/Shape_analysis/quad_grid.h>
 #include <CGAL/Tilable_surfaces/internal/tuning.h>
 
 #include <CGAL/boost/graph/helpers.h>
@@ -46,125 +47,6 @@
 namespace CGAL {
 namespace Tilable_surfaces {
 namespace internal {
-
-// The faces of a quad grid: face_at[row * columns + column].
-struct Quad_grid
-{
-  std::size_t rows = 0, columns = 0;
-  std::vector<std::size_t> face_at;
-  std::vector<Panel> corners;  // per face; corners 3 and 0 on its edge towards the next column
-  // Per face, corner i is the target of next^(corner_offset + i)(halfedge(f)).
-  std::vector<int> corner_offset;
-};
-
-// The faces of the strip through `f` that enters and leaves `f` through
-// face edges `j` and `j + 2`, in order, starting at `f` when the strip is
-// closed and at one of its ends otherwise.
-template <typename PolygonMesh, typename FaceIndexMap>
-std::vector<std::size_t> ordered_strip(const PolygonMesh& pm, FaceIndexMap fim,
-                                       typename boost::graph_traits<PolygonMesh>::face_descriptor f, int j)
-{
-  typedef typename boost::graph_traits<PolygonMesh>::halfedge_descriptor halfedge_descriptor;
-  const halfedge_descriptor h = face_edge_halfedges(f, pm)[std::size_t(j)];
-  // Walks out of f through `exit`, appending the faces met, until a border
-  // (false) or f again (true: a closed strip).
-  auto walk = [&](halfedge_descriptor exit, std::vector<std::size_t>& out) {
-    for(std::size_t guard = 0; guard < num_faces(pm); ++guard)
-    {
-      if(is_border(opposite(exit, pm), pm))
-        return false;
-      const halfedge_descriptor in = opposite(exit, pm);
-      if(face(in, pm) == f)
-        return true;
-      out.push_back(std::size_t(get(fim, face(in, pm))));
-      exit = next(next(in, pm), pm);
-    }
-    return false;
-  };
-  std::vector<std::size_t> forward, backward;
-  if(walk(next(next(h, pm), pm), forward))
-  {
-    forward.insert(forward.begin(), std::size_t(get(fim, f)));
-    return forward;
-  }
-  walk(h, backward);
-  std::reverse(backward.begin(), backward.end());
-  backward.push_back(std::size_t(get(fim, f)));
-  backward.insert(backward.end(), forward.begin(), forward.end());
-  return backward;
-}
-
-// The grid whose rows are the strips of direction `row_direction`, or an
-// empty grid (rows == 0) if the quads do not form one.
-template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
-Quad_grid quad_grid(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
-                    const std::array<std::vector<std::size_t>, 2>& strips, int row_direction)
-{
-  typedef typename boost::graph_traits<PolygonMesh>::face_descriptor face_descriptor;
-  typedef typename boost::graph_traits<PolygonMesh>::halfedge_descriptor halfedge_descriptor;
-  const std::size_t n = num_faces(pm);
-  std::vector<face_descriptor> face_of(n);
-  for(face_descriptor f : faces(pm))
-    face_of[get(fim, f)] = f;
-  Quad_grid grid;
-  if(n == 0)
-    return grid;
-  // The column of face 0 orders the rows, its row orders the columns.
-  const std::vector<std::size_t> down = ordered_strip(pm, fim, face_of[0], 1 - row_direction);
-  const std::vector<std::size_t> across = ordered_strip(pm, fim, face_of[0], row_direction);
-  const std::size_t rows = down.size(), columns = across.size();
-  if(rows < 2 || columns < 3 || rows * columns != n)
-    return grid;
-  std::vector<std::size_t> row_rank(n, no_index()), column_rank(n, no_index());
-  for(std::size_t r = 0; r < rows; ++r) row_rank[strips[row_direction][down[r]]] = r;
-  for(std::size_t c = 0; c < columns; ++c) column_rank[strips[1 - row_direction][across[c]]] = c;
-  std::vector<std::size_t> face_at(n, no_index());
-  for(std::size_t f = 0; f < n; ++f)
-  {
-    const std::size_t r = row_rank[strips[row_direction][f]], c = column_rank[strips[1 - row_direction][f]];
-    if(r == no_index() || c == no_index() || face_at[r * columns + c] != no_index())
-      return grid;
-    face_at[r * columns + c] = f;
-  }
-  // Corners from the edge shared with the next column (in a closed row the
-  // last column's next is the first; in an open row the last column takes
-  // the edge opposite to the one it shares with the previous column), so
-  // that corresponding corners of all faces have the same place in the grid.
-  auto shared_halfedge = [&](std::size_t f, std::size_t g, halfedge_descriptor& found) {
-    halfedge_descriptor h = halfedge(face_of[f], pm);
-    for(int i = 0; i < 4; ++i, h = next(h, pm))
-      if(!is_border(opposite(h, pm), pm) && std::size_t(get(fim, face(opposite(h, pm), pm))) == g)
-      {
-        found = h;
-        return true;
-      }
-    return false;
-  };
-  std::vector<Panel> corners(n);
-  std::vector<int> corner_offset(n, 0);
-  for(std::size_t r = 0; r < rows; ++r)
-    for(std::size_t c = 0; c < columns; ++c)
-    {
-      const std::size_t f = face_at[r * columns + c];
-      halfedge_descriptor h;
-      if(!shared_halfedge(f, face_at[r * columns + (c + 1) % columns], h))
-      {
-        if(c + 1 < columns || !shared_halfedge(f, face_at[r * columns + c - 1], h))
-          return grid;
-        h = next(next(h, pm), pm);
-      }
-      for(halfedge_descriptor g = halfedge(face_of[f], pm); g != h; g = next(g, pm))
-        ++corner_offset[f];
-      for(int i = 0; i < 4; ++i, h = next(h, pm))
-        corners[f][i] = to_eigen(get(vpm, target(h, pm)));
-    }
-  grid.rows = rows;
-  grid.columns = columns;
-  grid.face_at.swap(face_at);
-  grid.corners.swap(corners);
-  grid.corner_offset.swap(corner_offset);
-  return grid;
-}
 
 // One way to make a run of rows congruent: the columns in `groups` groups,
 // each one mold over the run, with per face the six corner distances in the
@@ -381,6 +263,15 @@ public:
         }
   }
 
+  // The least total cost with exactly m molds; infinity when no partition
+  // uses exactly m molds (or m > k).
+  double cost(std::size_t m) const
+  {
+    if(m > m_k)
+      return infinity();
+    return (std::min)(m_best[state(m_grid.rows, m, true)], m_best[state(m_grid.rows, m, false)]);
+  }
+
   // The cluster of every face with exactly m molds, numbered by first face,
   // or an empty vector when no partition uses exactly m molds (or m > k).
   std::vector<std::size_t> label(std::size_t m) const
@@ -441,6 +332,35 @@ struct Segment_options
   std::vector<std::vector<const Run_option*> > sets;
 };
 
+// Fills the options and sets of `s` from its grid, for up to k molds.
+inline void add_run_options(Segment_options& s, std::size_t k, Orientation_policy policy)
+{
+  const Quad_grid& grid = s.grid;
+  std::vector<Run_option>& options = s.options;
+  options.reserve(4); // at most 4: the sets' pointers stay valid
+  options.push_back(run_option(grid, std::vector<std::size_t>(grid.columns, 0), 1, policy));
+  for(std::size_t groups : {grid.columns, (grid.columns + 1) / 2, (grid.columns + 3) / 4})
+  {
+    if(groups < 2 || groups > k || options.back().groups == groups)
+      continue;
+    std::vector<std::size_t> column_group(grid.columns);
+    if(groups < grid.columns)
+      column_group = group_columns(grid, groups, policy);
+    else
+      std::iota(column_group.begin(), column_group.end(), std::size_t(0));
+    options.push_back(run_option(grid, column_group, groups, policy));
+  }
+  for(std::size_t i = 1; i < options.size(); ++i)
+    s.sets.push_back({&options[0], &options[i]});
+  // All options together, unless that is the one set above.
+  if(options.size() != 2)
+  {
+    s.sets.push_back({});
+    for(const Run_option& o : options)
+      s.sets.back().push_back(&o);
+  }
+}
+
 // The segment options for both choices of the rows, for up to k molds.
 // None when the quads do not form a grid, or it has more than `max_rows`
 // rows or `max_columns` columns. Held by unique_ptr: the sets point into
@@ -461,29 +381,7 @@ segment_options(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, std
     if(grid.rows == 0 || grid.rows > max_rows || grid.columns > max_columns ||
        double(grid.rows) * double(grid.rows) * double(k) > tuning::segment_runs_work)
       continue;
-    std::vector<Run_option>& options = s->options;
-    options.reserve(4); // at most 4: the sets' pointers stay valid
-    options.push_back(run_option(grid, std::vector<std::size_t>(grid.columns, 0), 1, policy));
-    for(std::size_t groups : {grid.columns, (grid.columns + 1) / 2, (grid.columns + 3) / 4})
-    {
-      if(groups < 2 || groups > k || options.back().groups == groups)
-        continue;
-      std::vector<std::size_t> column_group(grid.columns);
-      if(groups < grid.columns)
-        column_group = group_columns(grid, groups, policy);
-      else
-        std::iota(column_group.begin(), column_group.end(), std::size_t(0));
-      options.push_back(run_option(grid, column_group, groups, policy));
-    }
-    for(std::size_t i = 1; i < options.size(); ++i)
-      s->sets.push_back({&options[0], &options[i]});
-    // All options together, unless that is the one set above.
-    if(options.size() != 2)
-    {
-      s->sets.push_back({});
-      for(const Run_option& o : options)
-        s->sets.back().push_back(&o);
-    }
+    add_run_options(*s, k, policy);
     result.push_back(std::move(s));
   }
   return result;

@@ -28,7 +28,7 @@
 #include <CGAL/Tilable_surfaces/internal/Clustering/cluster_analysis.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/initial_clustering.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/panel_kinds.h>
-#include <CGAL/Tilable_surfaces/internal/Union_find.h>
+#include <CGAL/Tilable_surfaces/internal/Shape_analysis/quad_grid.h>
 #include <CGAL/Tilable_surfaces/internal/parallel_for.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 
@@ -37,27 +37,12 @@
 
 #include <algorithm>
 #include <array>
-#include <deque>
 #include <limits>
 #include <vector>
 
 namespace CGAL {
 namespace Tilable_surfaces {
 namespace internal {
-
-// Cluster ids renumbered by first face: cluster of face 0 is 0, and so on.
-inline std::size_t relabel_by_first_face(std::vector<std::size_t>& label)
-{
-  std::vector<std::size_t> id;
-  std::size_t next = 0;
-  for(std::size_t& l : label)
-  {
-    if(l >= id.size()) id.resize(l + 1, no_index());
-    if(id[l] == no_index()) id[l] = next++;
-    l = id[l];
-  }
-  return next;
-}
 
 // Splits the largest initial clusters until there are k of them.
 inline void split_to(std::size_t k, const std::vector<Panel>& quads,
@@ -85,102 +70,6 @@ inline void split_to(std::size_t k, const std::vector<Panel>& quads,
     }
     init.leaders.push_back(leader);
   }
-}
-
-// The parity of the place of `h` among the face edges of its face.
-template <typename PolygonMesh>
-int face_edge_parity(typename boost::graph_traits<PolygonMesh>::halfedge_descriptor h, const PolygonMesh& pm)
-{
-  const auto face_edges = face_edge_halfedges(face(h, pm), pm);
-  return int(std::find(face_edges.begin(), face_edges.end(), h) - face_edges.begin()) % 2;
-}
-
-// Per face, 1 when its face edges 1 and 3, not 0 and 2, are crossed by the
-// strips that face 0's edges 0 and 2 are crossed by, as far as the strips
-// can be told apart that way: across an edge, a strip leaves one face
-// through a face edge of parity p and enters the next through one of
-// parity q, so their flips differ by p xor q. Where a file starts its faces
-// at any corner (a CAD export), this is what lets a grid be seen as one;
-// on an all-quad mesh whose flips disagree somewhere (a strip that meets
-// itself, as around a vertex of odd valence), or with triangles, all 0.
-// Face 0 is never flipped: quad_grid() and trimmed_quad_grid() walk from
-// face 0 along its own face edges, and direction d must be the same strips
-// there (flipping face 0 by a majority rule, when it is in the minority,
-// makes a scrambled tunnel no grid).
-template <typename PolygonMesh, typename FaceIndexMap>
-std::vector<int> strip_direction_flips(const PolygonMesh& pm, FaceIndexMap fim)
-{
-  typedef typename boost::graph_traits<PolygonMesh>::face_descriptor face_descriptor;
-  const std::size_t n = num_faces(pm);
-  std::vector<face_descriptor> face_of(n);
-  for(face_descriptor f : faces(pm))
-  {
-    if(degree(f, pm) != 4)
-      return std::vector<int>(n, 0);
-    face_of[std::size_t(get(fim, f))] = f;
-  }
-  std::vector<int> flip(n, -1);
-  for(std::size_t start = 0; start < n; ++start)
-  {
-    if(flip[start] >= 0)
-      continue;
-    flip[start] = 0;
-    std::deque<std::size_t> queue(1, start);
-    while(!queue.empty())
-    {
-      const std::size_t f = queue.front();
-      queue.pop_front();
-      for(auto h : face_edge_halfedges(face_of[f], pm))
-      {
-        if(is_border(opposite(h, pm), pm))
-          continue;
-        const face_descriptor g = face(opposite(h, pm), pm);
-        const std::size_t gi = std::size_t(get(fim, g));
-        const int expected = flip[f] ^ face_edge_parity(h, pm) ^ face_edge_parity(opposite(h, pm), pm);
-        if(flip[gi] < 0)
-        {
-          flip[gi] = expected;
-          queue.push_back(gi);
-        }
-        else if(flip[gi] != expected)
-          return std::vector<int>(n, 0);
-      }
-    }
-  }
-  return flip;
-}
-
-// The strip of every face in each direction: strip[d][f] for the strip that
-// crosses face f through its face edges d xor flip and d xor flip + 2, with
-// the flips of strip_direction_flips(), or all flips 0 without
-// `carried_directions` (numbered 0..S_d - 1 by first face).
-template <typename PolygonMesh, typename FaceIndexMap>
-std::array<std::vector<std::size_t>, 2> quad_strips(const PolygonMesh& pm, FaceIndexMap fim,
-                                                    bool carried_directions = true)
-{
-  const std::size_t n = num_faces(pm);
-  Union_find<> sets(2 * n);
-  // Node 2 f + (j mod 2): face f's strip through its face edge j.
-  auto node = [&](typename boost::graph_traits<PolygonMesh>::halfedge_descriptor h) {
-    return 2 * std::size_t(get(fim, face(h, pm))) + std::size_t(face_edge_parity(h, pm));
-  };
-  for(auto e : edges(pm))
-  {
-    const auto h = halfedge(e, pm);
-    if(is_border_edge(h, pm))
-      continue;
-    sets.unite(node(h), node(opposite(h, pm)));
-  }
-  const std::vector<int> flip =
-    carried_directions ? strip_direction_flips(pm, fim) : std::vector<int>(n, 0);
-  std::array<std::vector<std::size_t>, 2> strip{{std::vector<std::size_t>(n), std::vector<std::size_t>(n)}};
-  for(int d = 0; d < 2; ++d)
-  {
-    for(std::size_t f = 0; f < n; ++f)
-      strip[d][f] = sets.find(2 * f + std::size_t(d ^ flip[f]));
-    relabel_by_first_face(strip[d]);
-  }
-  return strip;
 }
 
 // Greedy merges of the clusters of `label` (S of them) down to each count

@@ -22,6 +22,7 @@
 #include <array>
 #include <deque>
 #include <limits>
+#include <numeric>
 #include <utility>
 #include <vector>
 
@@ -215,6 +216,8 @@ Quad_grid trimmed_quad_grid(const PolygonMesh& pm, FaceIndexMap fim, VertexPoint
      !one_lattice_point_per_vertex(lattice, vertex_at))
     return none;
   trimmed.rows = rows;
+  trimmed.faces.resize(n);
+  std::iota(trimmed.faces.begin(), trimmed.faces.end(), std::size_t(0));
   trimmed.columns = columns;
   points = std::move(lattice);
   return trimmed;

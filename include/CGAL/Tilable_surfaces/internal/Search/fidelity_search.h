@@ -465,8 +465,11 @@ private:
   {
     if(m_sweep_suffices)
       return "an exact sweep clustering, no other candidate optimized (number_of_optimized_candidates 0)";
-    return std::string(sweep_chosen ? "a sweep clustering, better than " : "closest result among ") + "the " +
-           std::to_string(m_ranked.size()) +
+    const Clustering_candidate& chosen = m_state.clustering.candidates[m_state.clustering.chosen_candidate];
+    return std::string(sweep_chosen ? "a sweep clustering, better than "
+                                    : "closest result (from a " + std::string(origin_traits(chosen.origin).name) +
+                                        " candidate) among ") +
+           "the " + std::to_string(m_ranked.size()) +
            " candidates of smallest predicted displacement or length spread, or first segment clusterings, then " +
            std::to_string(m_rounds_done) + " improvement or repair rounds";
   }

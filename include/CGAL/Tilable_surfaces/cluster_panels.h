@@ -344,10 +344,13 @@ private:
   }
 
   // Pools the twist separation of `label` (twist_separation.h) when a
-  // cluster of it mixes twists and planar panels are not asked for.
+  // cluster of it mixes twists and planar panels are not asked for, up to
+  // large_mesh_faces faces: above, a candidate solved from the input costs
+  // 1 to 3 s per iteration, and the separation of every pooled candidate
+  // would cost more than the solves it adds.
   void pool_twist_separation(Clustering_result& result, const std::vector<std::size_t>& label)
   {
-    if(!m_settings.separate_twists || m_k <= 1)
+    if(!m_settings.separate_twists || m_k <= 1 || m_n > large_mesh_faces)
       return;
     Generated_candidate separated;
     separated.origin = Clustering_candidate::TWIST_SEPARATED;

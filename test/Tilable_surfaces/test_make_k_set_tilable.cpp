@@ -498,12 +498,12 @@ TEST(MakeKSetTilable, OneVisitorFollowsEveryStage)
   // Every candidate's solve counts here, the kept one's in the result.
   EXPECT_GT(r.optimization.iterations, 0);
   EXPECT_GE(visitor.iterations, r.optimization.iterations);
-  const std::vector<std::string> expected_order = {"validation", "threshold clustering", "merges",
-                                                   "other candidates", "orientations", "clustering",
-                                                   "sweep candidate", "sweep candidate",
+  const std::vector<std::string> expected_order = {"validation", "threshold clustering", "exact sweeps",
+                                                   "merges", "other candidates", "orientations",
+                                                   "clustering", "sweep candidate", "sweep candidate",
                                                    "displacement prediction", "candidate optimization"};
   ASSERT_GE(visitor.phases.size(), expected_order.size());
-  EXPECT_EQ(std::vector<std::string>(visitor.phases.begin(), visitor.phases.begin() + 10), expected_order);
+  EXPECT_EQ(std::vector<std::string>(visitor.phases.begin(), visitor.phases.begin() + 11), expected_order);
   EXPECT_EQ(visitor.phases.back(), "optimization");
 }
 

@@ -158,6 +158,65 @@ TEST(SweepStart, StartIsOneSectionSweptAndExact)
 
 namespace {
 
+// The largest distance between ring a of `points` fitted rigidly onto ring
+// b (Umeyama, no scale) and ring b.
+double ring_fit(const TSI::Point_matrix& points, int a, int b)
+{
+  auto ring = [&](int i) { return Eigen::Matrix3Xd(points.middleRows(i * around, around).transpose()); };
+  const Eigen::Matrix4d t = Eigen::umeyama(ring(a), ring(b), false);
+  return ((t.topLeftCorner<3, 3>() * ring(a)).colwise() + t.topRightCorner<3, 1>() - ring(b)).colwise().norm().maxCoeff();
+}
+
+} // namespace
+
+// With K = 24 = 3 x 8 molds the horn has, besides the sweep of three runs of
+// one section, a transition sweep: two groups of rows, each one run, and
+// between them one row whose 8 quads are molds of their own. Its start is
+// exact (Umeyama, independently); the rings of a group are congruent, but
+// the section grows across the transition row, so the start stays closer to
+// the growing horn than the one-section sweep's.
+TEST(SweepStart, TransitionRowLetsTheSectionGrow)
+{
+  const Mesh m = growing_horn();
+  const TSI::Point_matrix input = TSI::read_points(m, get(CGAL::vertex_point, m), get(CGAL::vertex_index, m));
+  std::vector<std::size_t> transition, one_section;
+  int transition_row = -1;
+  for(const std::vector<std::size_t>& label : loop_sweeps(m, 24, around))
+  {
+    std::map<std::size_t, int> size;
+    for(std::size_t l : label) ++size[l];
+    std::vector<int> singles(rings, 0);
+    for(int f = 0; f < rings * around; ++f)
+      singles[std::size_t(f / around)] += size[label[std::size_t(f)]] == 1 ? 1 : 0;
+    const auto row = std::find(singles.begin(), singles.end(), around);
+    if(row == singles.end())
+      one_section = label;
+    else
+    {
+      transition = label;
+      transition_row = int(row - singles.begin());
+      EXPECT_EQ(std::count(singles.begin(), singles.end(), 0), rings - 1) << "one transition row";
+    }
+  }
+  ASSERT_FALSE(transition.empty());
+  ASSERT_FALSE(one_section.empty());
+  ASSERT_GE(transition_row, 2);
+  ASSERT_LE(transition_row, rings - 3);
+  const TSI::Point_matrix start = start_of(m, transition);
+  ASSERT_EQ(start.rows(), input.rows());
+  Mesh moved = moved_to(m, start);
+  const Clustering c = clustered(moved, transition);
+  EXPECT_LE(congruence_by_umeyama(moved, c.cluster, c.orientation), 1e-12);
+  EXPECT_LE(ring_fit(start, 0, transition_row), 1e-12);
+  EXPECT_LE(ring_fit(start, transition_row + 1, rings), 1e-12);
+  EXPECT_GT(ring_fit(start, 0, rings), 0.1);
+  const double transition_distance = (start - input).rowwise().norm().maxCoeff();
+  const double one_section_distance = (start_of(m, one_section) - input).rowwise().norm().maxCoeff();
+  EXPECT_LT(transition_distance, 0.75 * one_section_distance);
+}
+
+namespace {
+
 // Whether every cluster of `label` (on a grid of `columns` columns, face
 // r * columns + c) is one run of consecutive columns of a closed ring, the
 // same in every row, and there are `k` of them.
@@ -779,6 +838,8 @@ TEST(SweepStart, LargeGridPoolEndsAtAnExactSweep)
     const std::set<TS::Clustering_candidate::Origin> made =
       origins(by_default ? surface.cluster(tiles) : surface.cluster(tiles.number_of_optimized_candidates(1)));
     EXPECT_EQ(made.count(TS::Clustering_candidate::GRID_SWEEPS), 1u);
+    // The beam of merges is not made when an exact sweep ends the search.
+    EXPECT_EQ(made.count(TS::Clustering_candidate::HIERARCHICAL), by_default ? 0u : 1u);
     EXPECT_EQ(made.count(TS::Clustering_candidate::QUAD_STRIPS), by_default ? 0u : 1u);
     EXPECT_EQ(made.count(TS::Clustering_candidate::KMEANS), by_default ? 0u : 1u);
     if(!by_default)

@@ -268,10 +268,17 @@ public:
     };
     initialize(result);
     stage("threshold clustering");
-    merge_to_tile_count(result);
-    stage("merges");
-    add_other_candidates(result);
-    stage("other candidates");
+    const bool sweep_ends_search = !run_generators(Exact_start_generators(), result);
+    stage("exact sweeps");
+    if(!sweep_ends_search)
+    {
+      merge_to_tile_count(result);
+      stage("merges");
+      add_other_candidates(result);
+      stage("other candidates");
+    }
+    for(const Generated_candidate& candidate : m_pooled_last)
+      pool(result, candidate);
     Cluster_shapes shapes = select(result);
     stage("orientations");
     return shapes;
@@ -291,17 +298,26 @@ public:
     score_initial_clustering();
   }
 
-  // 2. The last beam of binary merges down to K (Merge_generators).
+  // 2. The candidates solved first from their exact start
+  // (Exact_start_generators, the sweeps) are made first and pooled last.
+  // When one ends the search (Clustering_settings::sweep_ends_search), the
+  // others would never be optimized and are not made: the beam of merges
+  // costs O(K^2) a step (a 100k-quad grid at K = 4,000: 245 s) and the
+  // other generators O(F) each (a 100k-quad roof: 44 s).
+
+  // 3. The last beam of binary merges down to K (Merge_generators).
   void merge_to_tile_count(Clustering_result& result) { run_generators(Merge_generators(), result); }
 
-  // 3. The other candidates (Other_generators). The sweeps, solved first
-  // from their exact start, are made first and pooled last: when one ends
-  // the search (Clustering_settings::sweep_ends_search), the other
-  // candidates would never be optimized, and are not made (a 100k-quad roof
-  // clusters in 2.4 s instead of 44.1 s).
-  void add_other_candidates(Clustering_result& result) { run_generators(Other_generators(), result); }
+  // 4. The twist separations of the candidates of step 2, then the other
+  // candidates (Other_generators).
+  void add_other_candidates(Clustering_result& result)
+  {
+    for(const Generated_candidate& candidate : m_pooled_last)
+      pool_twist_separation(result, candidate.label);
+    run_generators(Other_generators(), result);
+  }
 
-  // 4. The candidate of lowest score, its S-quads and orientations.
+  // 5. The candidate of lowest score, its S-quads and orientations.
   Cluster_shapes select(Clustering_result& result) const
   {
     choose(result);
@@ -309,36 +325,35 @@ public:
   }
 
 private:
-  // Runs the generators of the list in its order on one context. A
-  // generator's candidates are pooled as it returns them, except those
-  // solved first from their exact start (origin_traits()), which are pooled
-  // after all the others; when one of its candidates with an exact start
+  // Runs the generators of the list in its order on one context, and
+  // returns whether they all ran. A generator's candidates are pooled as it
+  // returns them, each followed by its twist separation, except those
+  // solved first from their exact start (origin_traits()), which are kept
+  // for the end of run(); when one of its candidates with an exact start
   // ends the search, the generators after it are not run.
   template <typename... Generators>
-  void run_generators(Generator_list<Generators...>, Clustering_result& result)
+  bool run_generators(Generator_list<Generators...>, Clustering_result& result)
   {
     const Context context = generator_context();
-    std::vector<Generated_candidate> pooled_last;
-    static_cast<void>((true && ... && run_generator(Generators(), context, result, pooled_last)));
-    for(const Generated_candidate& candidate : pooled_last)
-      pool(result, candidate);
+    return (true && ... && run_generator(Generators(), context, result));
   }
 
   // Runs `generator`; whether the generators after it are to run.
   template <typename Generator>
-  bool run_generator(const Generator& generator, const Context& context, Clustering_result& result,
-                     std::vector<Generated_candidate>& pooled_last)
+  bool run_generator(const Generator& generator, const Context& context, Clustering_result& result)
   {
     bool ends_search = false;
     for(Generated_candidate& candidate : generator(context))
     {
       ends_search = ends_search || (candidate.has_exact_start && m_settings.sweep_ends_search &&
                                     m_settings.sweep_ends_search(candidate.label));
-      pool_twist_separation(result, candidate.label);
       if(origin_traits(candidate.origin).solved_first_from_start)
-        pooled_last.push_back(std::move(candidate));
+        m_pooled_last.push_back(std::move(candidate));
       else
+      {
+        pool_twist_separation(result, candidate.label);
         pool(result, candidate);
+      }
     }
     return !ends_search;
   }
@@ -512,6 +527,7 @@ private:
   const Clustering_settings m_settings;
   CGAL::Random m_random;
   const bool m_triangles;  // the mesh has triangles as well as quads (or only triangles)
+  std::vector<Generated_candidate> m_pooled_last;  // solved first from their exact start: pooled after the others
   bool m_exact = true;
   std::vector<double> m_affinity;  // n x n dissimilarities, exact path only
   Initial_clustering m_init;

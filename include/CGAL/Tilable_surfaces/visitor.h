@@ -41,8 +41,9 @@ struct Default_visitor
   }
 
   /// Called when a phase ends, with its duration in seconds:
-  /// `cluster_panels()`: "threshold clustering", "merges", "other candidates",
-  /// "orientations";
+  /// `cluster_panels()`: "threshold clustering", "exact sweeps", "merges",
+  /// "other candidates", "orientations" (no "merges" and "other candidates"
+  /// when an exact sweep ends the search);
   /// `K_set_tilable_surface::optimize_closest()`: "sweep candidate",
   /// "displacement prediction", "candidate optimization", "improvement round"
   /// (the last three only when the search goes beyond the sweeps, the first

@@ -256,6 +256,10 @@ constexpr double segment_runs_work = 1e8;
 // Sweep candidates: a grid whose rows^2 x runs exceeds this is not cut into
 // runs of rows (the same dynamic program).
 constexpr double sweep_runs_work = 1e8;
+// Transition sweeps: the transition rows between their groups are chosen
+// among this many rows spread evenly (the dynamic program fits a sweep per
+// pair of them).
+constexpr std::size_t transition_row_choices = 64;
 // Screw column runs: runs of at most sqrt(this / columns) columns, so that
 // the O(columns^3 / 8) search stays near this many steps.
 constexpr double screw_column_runs_work = 1e8;

@@ -72,15 +72,16 @@ struct Generator_list
 {
 };
 
-// Step 2 of Panel_clusterer: the beam of merges down to K.
+// Step 2 of Panel_clusterer: the generators whose candidates are solved
+// first from their exact start, pooled after all the others; when one of
+// their candidates ends the search, no other generator runs.
+typedef Generator_list<Sweep_generator> Exact_start_generators;
+
+// Step 3: the beam of merges down to K.
 typedef Generator_list<Hierarchical_generator> Merge_generators;
 
-// Step 3: the other candidates. Generators whose candidates are solved first
-// from their exact start run first; when one of those ends the search
-// (Clustering_settings::sweep_ends_search), the rest are not run. The pool
-// holds the candidates in this order, those solved first from their start
-// last.
-typedef Generator_list<Sweep_generator, Kmeans_generator, Quad_strip_generator, Grid_segment_generator,
+// Step 4: the other candidates, pooled in this order.
+typedef Generator_list<Kmeans_generator, Quad_strip_generator, Grid_segment_generator,
                        Split_segment_generator, Patch_segment_generator>
   Other_generators;
 

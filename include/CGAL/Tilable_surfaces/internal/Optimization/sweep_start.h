@@ -16,6 +16,9 @@
 //   by the composed motions, its column runs put on their helices;
 // - the rings: the section pushed forward again, the whole then rigidly
 //   aligned with the input.
+// A row that is a run of its own has a mold per quad: the groups of runs it
+// separates are each built so, from a section of their own
+// (grouped_sweep_start()).
 
 #include <CGAL/Tilable_surfaces/internal/Clustering/sweep_candidates.h>
 #include <CGAL/Tilable_surfaces/internal/Tilable_problem.h>
@@ -24,6 +27,7 @@
 
 #include <algorithm>
 #include <array>
+#include <utility>
 #include <vector>
 
 namespace CGAL {
@@ -132,6 +136,55 @@ inline Point_matrix placed_sweep(const Point_matrix& points, const Eigen::Matrix
   return start;
 }
 
+// The rows [first, end) of the groups of runs of `run_of` that share one
+// section: maximal sequences of runs of two rows or more. A run of a single
+// row has a mold per quad, so the section may change across it: the rings
+// on its two sides belong to different groups (a transition row).
+inline std::vector<std::pair<std::size_t, std::size_t> > section_groups(const std::vector<std::size_t>& run_of)
+{
+  const std::size_t rows = run_of.size();
+  std::vector<bool> single(rows);
+  for(std::size_t r = 0; r < rows; ++r)
+    single[r] = (r == 0 || run_of[r - 1] != run_of[r]) && (r + 1 == rows || run_of[r + 1] != run_of[r]);
+  std::vector<std::pair<std::size_t, std::size_t> > groups;
+  for(std::size_t r = 0; r < rows; ++r)
+    if(!single[r])
+    {
+      if(groups.empty() || groups.back().second != r)
+        groups.emplace_back(r, r);
+      groups.back().second = r + 1;
+    }
+  return groups;
+}
+
+// The sweep start of an open full grid whose runs `run_of` may include
+// transition rows (section_groups()): every group swept from its own
+// section and rigidly aligned with its input rings; the rings of a group
+// start where the rows between two groups are all transitions stay as
+// input. Arguments as placed_sweep() takes them.
+inline Point_matrix grouped_sweep_start(const Point_matrix& points, const std::vector<Eigen::Matrix3Xd>& ring,
+                                        const std::vector<std::vector<std::size_t> >& rings,
+                                        const std::vector<Eigen::ArrayXd>& present,
+                                        const std::vector<std::size_t>& run_of)
+{
+  Point_matrix start = points;
+  for(const std::pair<std::size_t, std::size_t>& group : section_groups(run_of))
+  {
+    const std::size_t a = group.first, b = group.second;
+    const std::vector<Eigen::Matrix3Xd> group_ring(ring.begin() + a, ring.begin() + b + 1);
+    const std::vector<std::vector<std::size_t> > group_rings(rings.begin() + a, rings.begin() + b + 1);
+    const std::vector<Eigen::ArrayXd> group_present(present.begin() + a, present.begin() + b + 1);
+    std::vector<std::size_t> group_run_of(run_of.begin() + a, run_of.begin() + b);
+    for(std::size_t& run : group_run_of)
+      run -= run_of[a];
+    const Swept_section swept = swept_section(group_ring, group_run_of, false, group_present);
+    if(!swept.valid)
+      return Point_matrix();
+    start = placed_sweep(start, swept.swept(), group_ring, group_rings, group_present, false);
+  }
+  return start;
+}
+
 // The start of quad_grid_sweep_start() on the grid `grid` of `pm` (its
 // lattice points `points_of_grid` when trimmed); empty when the clusters do
 // not lie as a sweep of it.
@@ -167,6 +220,8 @@ Point_matrix grid_sweep_start(const PolygonMesh& pm, VertexIndexMap vim,
     for(Eigen::Index j = 0; j < width; ++j)
       if(present[i](j) > 0)
         ring[i].col(j) = points.row(Eigen::Index(rings[i][std::size_t(j)])).transpose();
+  if(!one_run && !column_runs)
+    return grouped_sweep_start(points, ring, rings, present, run_of);
   Swept_section swept = swept_section(ring, run_of, column_runs, present, closed);
   if(!swept.valid || (column_runs && !fit_screw_column_runs(swept.section, swept.motion[0], run_of_column)))
     return Point_matrix();

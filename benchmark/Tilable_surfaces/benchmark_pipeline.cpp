@@ -27,15 +27,16 @@
 // congruence error is where the solver was.
 //
 // Given mesh files instead, it runs each of them, at K = max(4, faces / 25)
-// unless --k is given. With `--subdivide L`, each file is also run after 1
+// unless --k is given. `--faces-per-mold N` sets K = max(4, faces / N) for
+// every mesh, generated or read. With `--subdivide L`, each file is also run after 1
 // to L steps of Catmull-Clark subdivision (CGAL's, each step 4 times the
 // quads, a triangle 3 quads) up to --max-quads: a series of meshes that are
 // no grid, with its growth exponents.
 //
 // `--surface NAME` (repeatable) runs only the generated surfaces named.
 //
-// Usage: benchmark_pipeline [--k K] [--max-quads N] [--budget SECONDS] [--surface NAME]
-//                           [--subdivide L] [FILE ...]
+// Usage: benchmark_pipeline [--k K | --faces-per-mold N] [--max-quads N] [--budget SECONDS]
+//                           [--surface NAME] [--subdivide L] [FILE ...]
 #include "benchmark_surfaces.h"
 
 #include <CGAL/Tilable_surfaces/IO/read_polygon_mesh.h>
@@ -63,6 +64,11 @@ typedef CGAL::Simple_cartesian<double> Kernel;
 typedef CGAL::Surface_mesh<Kernel::Point_3> Mesh;
 
 namespace {
+
+// K of a mesh file without --k or --faces-per-mold: max(4, faces / this).
+constexpr std::size_t default_faces_per_mold = 25;
+// K of a generated surface without --k or --faces-per-mold.
+constexpr std::size_t generated_tile_count = 100;
 
 // What the visitor records; the pipeline copies its visitor, so the copies
 // share this through a pointer.
@@ -174,11 +180,20 @@ struct Series_times
   }
 };
 
+// K for a mesh of `faces` faces: `k` when given (non-zero), else
+// max(4, faces / faces_per_mold) when given, else `otherwise`.
+std::size_t tile_count(std::size_t k, std::size_t faces_per_mold, std::size_t faces, std::size_t otherwise)
+{
+  if(k > 0)
+    return k;
+  return faces_per_mold > 0 ? (std::max)(std::size_t(4), faces / faces_per_mold) : otherwise;
+}
+
 // The mesh file `file`, then up to `subdivisions` Catmull-Clark steps of it
-// of at most `max_quads` faces, at K = k or max(4, faces / 25); their growth
-// exponents to `growth`.
-void run_file_series(const std::string& file, int subdivisions, std::size_t k, std::size_t max_quads,
-                     double budget, std::ostream& growth)
+// of at most `max_quads` faces, at K = k or max(4, faces / faces_per_mold);
+// their growth exponents to `growth`.
+void run_file_series(const std::string& file, int subdivisions, std::size_t k, std::size_t faces_per_mold,
+                     std::size_t max_quads, double budget, std::ostream& growth)
 {
   const std::string name = file.substr(file.find_last_of('/') + 1);
   Series_times series;
@@ -195,8 +210,9 @@ void run_file_series(const std::string& file, int subdivisions, std::size_t k, s
       Mesh copy = mesh;
       double seconds_taken = 0;
       const std::string row = level == 0 ? name : name + " (subdivided " + std::to_string(level) + "x)";
-      if(run(row, copy, k > 0 ? k : (std::max)(std::size_t(4), std::size_t(mesh.number_of_faces()) / 25),
-             budget, seconds_taken))
+      const std::size_t faces = mesh.number_of_faces();
+      const std::size_t per_mold = faces_per_mold > 0 ? faces_per_mold : default_faces_per_mold;
+      if(run(row, copy, tile_count(k, per_mold, faces, 0), budget, seconds_taken))
         series.add(mesh, seconds_taken);
     }
   }
@@ -220,7 +236,7 @@ struct Series
 
 int main(int argc, char** argv)
 {
-  std::size_t k = 0, max_quads = 100000;
+  std::size_t k = 0, faces_per_mold = 0, max_quads = 100000;
   int subdivisions = 0;
   double budget = 600;
   std::vector<std::string> files, surfaces;
@@ -229,6 +245,8 @@ int main(int argc, char** argv)
     const std::string arg = argv[i];
     if(i + 1 < argc && arg == "--k")
       k = std::stoul(argv[++i]);
+    else if(i + 1 < argc && arg == "--faces-per-mold")
+      faces_per_mold = std::stoul(argv[++i]);
     else if(i + 1 < argc && arg == "--max-quads")
       max_quads = std::stoul(argv[++i]);
     else if(i + 1 < argc && arg == "--budget")
@@ -239,8 +257,8 @@ int main(int argc, char** argv)
       subdivisions = std::stoi(argv[++i]);
     else if(arg.rfind("--", 0) == 0)
     {
-      std::cerr << "usage: benchmark_pipeline [--k K] [--max-quads N] [--budget SECONDS] [--surface NAME] "
-                   "[--subdivide L] [FILE ...]\n";
+      std::cerr << "usage: benchmark_pipeline [--k K | --faces-per-mold N] [--max-quads N] [--budget SECONDS] "
+                   "[--surface NAME] [--subdivide L] [FILE ...]\n";
       return EXIT_FAILURE;
     }
     else
@@ -271,7 +289,7 @@ int main(int argc, char** argv)
             << "|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|\n";
   std::ostringstream growth;
   for(const std::string& file : files)
-    run_file_series(file, subdivisions, k, max_quads, budget, growth);
+    run_file_series(file, subdivisions, k, faces_per_mold, max_quads, budget, growth);
   if(!files.empty())
   {
     std::cout << growth.str();
@@ -291,7 +309,8 @@ int main(int argc, char** argv)
       if(mesh.number_of_faces() > max_quads)
         break;
       double seconds_taken = 0;
-      if(run(s.name, mesh, k > 0 ? k : 100, budget, seconds_taken))
+      if(run(s.name, mesh, tile_count(k, faces_per_mold, mesh.number_of_faces(), generated_tile_count), budget,
+             seconds_taken))
         series.add(mesh, seconds_taken);
     }
     series.print(growth, s.name);

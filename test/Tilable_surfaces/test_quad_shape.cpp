@@ -137,6 +137,25 @@ TEST(QuadShape, HandComputedLengthsVolumeAndPlanarity)
   EXPECT_EQ(TS::diagonal_distance(flat), 0.0);
 }
 
+// The relative twist 6 V / mean edge^3 of the quad above, by hand; it keeps
+// its value under scaling and a rigid motion, flips under a mirror, and is 0
+// for a triangle.
+TEST(QuadShape, RelativeTwistIsTheScaleFreeSignedVolume)
+{
+  const double h = 0.25;
+  const TS::Panel q{{Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(1, 1, 0), Vector3d(0, 1, h)}};
+  const double mean = (2 + 2 * std::sqrt(1 + h * h)) / 4;
+  EXPECT_DOUBLE_EQ(TS::relative_twist(q), h / (mean * mean * mean));
+  const Eigen::Matrix3d rotation = Eigen::AngleAxisd(0.7, Vector3d(1, 2, 3).normalized()).toRotationMatrix();
+  TS::Panel moved = q;
+  for(int i = 0; i < 4; ++i)
+    moved[i] = 3.5 * (rotation * q[i]) + Vector3d(-2, 5, 1);
+  EXPECT_NEAR(TS::relative_twist(moved), TS::relative_twist(q), 1e-14);
+  EXPECT_NEAR(TS::relative_twist(mirrored_x(q)), -TS::relative_twist(q), 1e-15);
+  const TS::Panel triangle(Vector3d(0, 0, 0), Vector3d(1, 0, 0), Vector3d(0, 1, h));
+  EXPECT_EQ(TS::relative_twist(triangle), 0.0);
+}
+
 TEST(QuadShape, SignedVolumeFollowsTheSignOfTheRelabelling)
 {
   const TS::Panel q = skew_quad();

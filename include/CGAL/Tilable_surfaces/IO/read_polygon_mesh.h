@@ -13,7 +13,6 @@
 #include <CGAL/Tilable_surfaces/exceptions.h>
 #include <CGAL/Tilable_surfaces/validation.h>
 
-#include <CGAL/IO/OBJ.h>
 #include <CGAL/IO/PLY.h>
 #include <CGAL/Polygon_mesh_processing/polygon_soup_to_polygon_mesh.h>
 #include <CGAL/Simple_cartesian.h>
@@ -21,12 +20,14 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cerrno>
 #include <cmath>
 #include <cstddef>
 #include <cstdint>
 #include <cstdlib>
 #include <fstream>
 #include <istream>
+#include <iterator>
 #include <limits>
 #include <sstream>
 #include <stdexcept>
@@ -91,71 +92,148 @@ inline double parse_coordinate(const std::string& token, const std::string& what
   return x;
 }
 
+// The whitespace-separated tokens of a stream, comments (from '#' to the end
+// of the line) removed, with the number of the line each comes from: OFF is
+// such a token stream, its records may span lines.
+class Token_stream
+{
+public:
+  explicit Token_stream(std::istream& in) : in_(in) {}
+
+  // The next token; false at the end of the stream.
+  bool next(std::string& token)
+  {
+    while(position_ == tokens_.size())
+    {
+      std::string line;
+      if(!std::getline(in_, line))
+        return false;
+      ++line_number_;
+      tokens_ = line_tokens(line);
+      position_ = 0;
+    }
+    token = tokens_[position_++];
+    return true;
+  }
+
+  // Drops what is left of the line of the last token.
+  void skip_rest_of_line() { position_ = tokens_.size(); }
+
+  std::size_t line_number() const { return line_number_; }
+
+private:
+  std::istream& in_;
+  std::vector<std::string> tokens_;
+  std::size_t position_ = 0, line_number_ = 0;
+};
+
+// What an OFF header declares: [ST][C][N][4][n]OFF, the dimension after nOFF
+// (only 3 is read), BINARY refused, then the vertex, face and edge counts.
+struct OFF_header
+{
+  bool homogeneous = false;  // 4OFF: x y z w per vertex, the point (x/w, y/w, z/w)
+  std::size_t vertices = 0, faces = 0;
+};
+
+inline OFF_header read_OFF_header(Token_stream& tokens, std::size_t size)
+{
+  std::string keyword, token;
+  tokens.next(keyword);
+  std::size_t j = keyword.compare(0, 2, "ST") == 0 ? 2 : 0;
+  for(char prefix : {'C', 'N', '4', 'n'})
+    if(j < keyword.size() && keyword[j] == prefix) ++j;
+  if(keyword.size() < 3 || keyword.compare(j, std::string::npos, "OFF") != 0)
+    throw File_error("not an ASCII OFF file: it does not start with [ST][C][N][4][n]OFF");
+  OFF_header header;
+  header.homogeneous = keyword.find('4') < j;
+  auto count = [&](const std::string& what, std::size_t limit) {
+    if(!tokens.next(token))
+      throw File_error("the OFF header ends before " + what);
+    return parse_count(token, limit, size, what);
+  };
+  if(keyword.find('n') < j && count("the OFF dimension", size) != 3)
+    throw File_error("the OFF dimension is " + token + "; only 3 is supported");
+  if(!tokens.next(token))
+    throw File_error("the OFF header ends before the OFF vertex count");
+  if(token == "BINARY")
+    throw File_error("binary OFF is not supported; use PLY or ASCII OFF");
+  header.vertices = parse_count(token, size / 6, size, "the OFF vertex count");
+  header.faces = count("the OFF face count", size / 4);
+  count("the OFF edge count", (std::numeric_limits<std::size_t>::max)());
+  if(header.vertices * 6 + header.faces * 4 > size)
+    throw File_error("the OFF header claims " + std::to_string(header.vertices) + " vertices and " +
+                     std::to_string(header.faces) + " faces, more than the file of " +
+                     std::to_string(size) + " bytes can hold");
+  return header;
+}
+
+// The OFF vertex `i`: its coordinates may span lines; what follows them on
+// their line (normal, colour, texture coordinates) is ignored.
+template <typename Point>
+Point read_OFF_vertex(Token_stream& tokens, const OFF_header& header, std::size_t i)
+{
+  const std::string what = "OFF vertex " + std::to_string(i);
+  double c[4] = {0, 0, 0, 1};
+  std::string token;
+  for(int d = 0; d < (header.homogeneous ? 4 : 3); ++d)
+  {
+    if(!tokens.next(token))
+      throw File_error("the OFF file is truncated: it ends in vertex " + std::to_string(i) + " of " +
+                       std::to_string(header.vertices));
+    c[d] = parse_coordinate(token, what);
+  }
+  tokens.skip_rest_of_line();
+  if(c[3] == 0)
+    throw File_error(what + " has w = 0, a point at infinity (line " +
+                     std::to_string(tokens.line_number()) + ")");
+  return c[3] == 1 ? Point(c[0], c[1], c[2]) : Point(c[0] / c[3], c[1] / c[3], c[2] / c[3]);
+}
+
+// The vertex indices of OFF face `f`: they may span lines; what follows the
+// last one on its line (the face's colour) is ignored.
+inline std::vector<std::size_t> read_OFF_face(Token_stream& tokens, const OFF_header& header,
+                                              std::size_t f, std::size_t size)
+{
+  std::string token;
+  if(!tokens.next(token))
+    throw File_error("the OFF file is truncated: it declares " + std::to_string(header.vertices) +
+                     " vertices and " + std::to_string(header.faces) + " faces but holds " +
+                     std::to_string(header.vertices) + " and " + std::to_string(f));
+  const std::string what = "OFF face " + std::to_string(f) + " (line " +
+                           std::to_string(tokens.line_number()) + ")";
+  const std::size_t corners = parse_count(token, size / 2, size, "the vertex count of " + what);
+  std::vector<std::size_t> face;
+  while(face.size() < corners)
+  {
+    if(!tokens.next(token))
+      throw File_error(what + " claims " + std::to_string(corners) + " vertices but lists " +
+                       std::to_string(face.size()) + " before the end of the file");
+    face.push_back(
+      parse_count(token, (std::numeric_limits<std::size_t>::max)(), size, "a vertex of " + what));
+  }
+  tokens.skip_rest_of_line();
+  return face;
+}
+
 // ASCII OFF, read here rather than by CGAL's reader so that every count is
-// checked before it sizes anything: the keyword ([ST][C][N]OFF; colours,
-// normals and texture coordinates after the coordinates are ignored), the
-// vertex, face and edge counts, then one line per vertex and per face. Each
-// vertex needs at least 6 bytes ("0 0 0\n"), each face 4 ("1 0\n"), each
-// face corner 2.
+// checked before it sizes anything, and as the token stream the format is
+// (CGAL's reader wants a record per line). Each vertex needs at least 6 bytes
+// ("0 0 0\n"), each face 4 ("1 0\n"), each face corner 2.
 template <typename Point>
 void read_OFF_soup(std::istream& in, std::size_t size, std::vector<Point>& points,
                    std::vector<std::vector<std::size_t> >& polygons)
 {
-  std::string line;
-  std::vector<std::string> header;
-  while(header.size() < 4 && std::getline(in, line))
-    for(const std::string& t : line_tokens(line)) header.push_back(t);
-  const std::string keyword = header.empty() ? std::string() : header[0];
-  const std::size_t off = keyword.rfind("OFF");
-  const std::string prefix = off == std::string::npos ? keyword : keyword.substr(0, off);
-  if(off == std::string::npos || off + 3 != keyword.size() ||
-     prefix.find_first_not_of("STCN") != std::string::npos)
-    throw File_error(keyword.find("OFF") != std::string::npos && keyword.find_first_of("4n") < off
-                       ? "the OFF variant '" + keyword + "' (4D or n-dimensional) is not supported"
-                       : "not an ASCII OFF file: it does not start with [ST][C][N]OFF");
-  if(header.size() > 1 && header[1] == "BINARY")
-    throw File_error("binary OFF is not supported; use PLY or ASCII OFF");
-  if(header.size() != 4)
-    throw File_error("the OFF header must give 3 counts (vertices, faces, edges), alone on their line");
-  const std::size_t nv = parse_count(header[1], size / 6, size, "the OFF vertex count");
-  const std::size_t nf = parse_count(header[2], size / 4, size, "the OFF face count");
-  if(nv * 6 + nf * 4 > size)
-    throw File_error("the OFF header claims " + std::to_string(nv) + " vertices and " +
-                     std::to_string(nf) + " faces, more than the file of " + std::to_string(size) +
-                     " bytes can hold");
-  points.reserve(nv);
-  polygons.reserve(nf);
-  while(points.size() + polygons.size() < nv + nf && std::getline(in, line))
-  {
-    const std::vector<std::string> tokens = line_tokens(line);
-    if(tokens.empty())
-      continue;
-    if(points.size() < nv)
-    {
-      const std::string what = "OFF vertex " + std::to_string(points.size());
-      if(tokens.size() < 3)
-        throw File_error(what + " has fewer than 3 coordinates");
-      points.emplace_back(parse_coordinate(tokens[0], what), parse_coordinate(tokens[1], what),
-                          parse_coordinate(tokens[2], what));
-      continue;
-    }
-    const std::string what = "OFF face " + std::to_string(polygons.size());
-    const std::size_t corners = parse_count(tokens[0], size / 2, size, "the vertex count of " + what);
-    if(corners + 1 > tokens.size())
-      throw File_error(what + " claims " + tokens[0] + " vertices but lists " +
-                       std::to_string(tokens.size() - 1));
-    polygons.emplace_back();
-    for(std::size_t j = 1; j <= corners; ++j)
-      polygons.back().push_back(
-        parse_count(tokens[j], (std::numeric_limits<std::size_t>::max)(), size, "a vertex of " + what));
-  }
-  if(points.size() < nv || polygons.size() < nf)
-    throw File_error("the OFF file is truncated: it declares " + std::to_string(nv) + " vertices and " +
-                     std::to_string(nf) + " faces but holds " + std::to_string(points.size()) +
-                     " and " + std::to_string(polygons.size()));
+  Token_stream tokens(in);
+  const OFF_header header = read_OFF_header(tokens, size);
+  points.reserve(header.vertices);
+  polygons.reserve(header.faces);
+  for(std::size_t i = 0; i < header.vertices; ++i)
+    points.push_back(read_OFF_vertex<Point>(tokens, header, i));
+  for(std::size_t f = 0; f < header.faces; ++f)
+    polygons.push_back(read_OFF_face(tokens, header, f, size));
 }
 
-struct PLY_property { int count_bytes = 0; int value_bytes = 0; std::string count_type; };
+struct PLY_property { int count_bytes = 0; int value_bytes = 0; std::string count_type, value_type, name; };
 struct PLY_element { std::string name; std::size_t count = 0; std::vector<PLY_property> properties; };
 struct PLY_header { std::string format; std::vector<PLY_element> elements; };
 
@@ -166,6 +244,19 @@ inline int PLY_type_bytes(const std::string& t)
   if(t == "int" || t == "uint" || t == "float" || t == "int32" || t == "uint32" || t == "float32") return 4;
   if(t == "double" || t == "float64") return 8;
   throw File_error("the PLY header has an unknown type '" + t + "'");
+}
+
+// CGAL's reader takes a face's vertex list of 32-bit integers only (and reads
+// no face from a list of other values): such a list is refused by its name.
+inline void check_PLY_face_lists(const PLY_header& header)
+{
+  for(const PLY_element& e : header.elements)
+    for(const PLY_property& p : e.properties)
+      if(e.name == "face" && (p.name == "vertex_indices" || p.name == "vertex_index") &&
+         p.value_type != "int" && p.value_type != "uint" && p.value_type != "int32" &&
+         p.value_type != "uint32")
+        throw File_error("the PLY face list " + p.name + " holds '" + p.value_type +
+                         "' values; only int and uint (32 bits) are read");
 }
 
 // The header up to end_header, each element count at most `size`.
@@ -195,7 +286,9 @@ inline PLY_header read_PLY_header(std::istream& in, std::size_t size)
       {
         p.count_type = t[2];
         p.count_bytes = PLY_type_bytes(t[2]);
+        p.value_type = t[3];
         p.value_bytes = PLY_type_bytes(t[3]);
+        p.name = t[4];
       }
       else
         p.value_bytes = PLY_type_bytes(t[1]);
@@ -207,6 +300,7 @@ inline PLY_header read_PLY_header(std::istream& in, std::size_t size)
   if(header.format != "ascii" && header.format != "binary_little_endian" &&
      header.format != "binary_big_endian")
     throw File_error("the PLY format is '" + header.format + "', not ascii or binary");
+  check_PLY_face_lists(header);
   return header;
 }
 
@@ -308,27 +402,94 @@ inline std::string coordinate_problem(const std::vector<std::string>& coordinate
   return std::string();
 }
 
-// The first coordinate_problem() of the "v" lines of an OBJ file, read from
-// its start.
-inline std::string unreadable_OBJ_coordinate(std::istream& in)
+// The next statement of an OBJ file and the number of its first line: a
+// UTF-8 byte-order mark at the start of the file is dropped, and a line that
+// ends in '\' continues on the next one.
+inline bool next_OBJ_statement(std::istream& in, std::string& statement, std::size_t& line_number,
+                               std::size_t& first_line)
 {
-  std::size_t line_number = 0, vertex = 0;
-  std::string line;
-  while(std::getline(in, line))
+  statement.clear();
+  first_line = line_number + 1;
+  for(std::string line; std::getline(in, line);)
   {
-    ++line_number;
-    std::vector<std::string> tokens = line_tokens(line);
-    if(tokens.empty() || tokens[0] != "v")
-      continue;
-    tokens.erase(tokens.begin());
-    if(tokens.size() > 3)
-      tokens.resize(3);  // an optional weight or colour follows
-    const std::string problem = coordinate_problem(tokens, vertex, line_number);
-    if(!problem.empty())
-      return problem;
-    ++vertex;
+    if(++line_number == 1 && line.compare(0, 3, "\xEF\xBB\xBF") == 0)
+      line.erase(0, 3);
+    if(!line.empty() && line.back() == '\r')
+      line.pop_back();
+    const bool continued = !line.empty() && line.back() == '\\';
+    statement += continued ? line.substr(0, line.size() - 1) + " " : line;
+    if(!continued)
+      return true;
   }
-  return std::string();
+  return !statement.empty();
+}
+
+// The OBJ statements that describe no polygon: read and ignored.
+inline bool is_ignored_OBJ_statement(const std::string& keyword)
+{
+  static const char* const ignored[] = {
+    "vt", "vn", "vp", "o", "g", "s", "mg", "mtllib", "usemtl", "maplib", "usemap", "l", "p",
+    "bevel", "c_interp", "d_interp", "lod", "shadow_obj", "trace_obj", "ctech", "stech", "call", "csh",
+    "cstype", "deg", "bmat", "step", "curv", "curv2", "surf", "parm", "trim", "hole", "scrv", "sp",
+    "end", "con", "bsp", "bzp", "cdc", "cdp", "res"};
+  return std::find(std::begin(ignored), std::end(ignored), keyword) != std::end(ignored);
+}
+
+// The 0-based vertex index of the face corner `token` ("v", "v/vt", "v//vn"
+// or "v/vt/vn"): v counts from 1, or back from the last of the
+// `number_of_points` vertices read so far when negative.
+inline std::size_t OBJ_vertex_index(const std::string& token, std::size_t number_of_points,
+                                    const std::string& what)
+{
+  const std::string v = token.substr(0, token.find('/'));
+  char* end = nullptr;
+  errno = 0;
+  const long long i = std::strtoll(v.c_str(), &end, 10);
+  if(v.empty() || end != v.c_str() + v.size() || errno == ERANGE || i == 0)
+    throw File_error(what + " has '" + token + "', not a vertex reference");
+  if(i > 0)
+    return std::size_t(i - 1);  // a vertex beyond the file's is refused by used_points()
+  if(std::size_t(-(i + 1)) >= number_of_points)
+    throw File_error(what + " has '" + token + "', before the first vertex");
+  return number_of_points - std::size_t(-i);
+}
+
+// An OBJ file's vertices ("v x y z", anything after z ignored: a weight or a
+// colour) and faces ("f" with indices as OBJ_vertex_index() reads them);
+// the other statements of the format are ignored, anything else is refused.
+template <typename Point>
+void read_OBJ_soup(std::istream& in, std::vector<Point>& points,
+                   std::vector<std::vector<std::size_t> >& polygons)
+{
+  std::string statement;
+  for(std::size_t line_number = 0, first_line = 0;
+      next_OBJ_statement(in, statement, line_number, first_line);)
+  {
+    std::vector<std::string> tokens = line_tokens(statement);
+    const std::string where = " (line " + std::to_string(first_line) + ")";
+    if(tokens.empty() || is_ignored_OBJ_statement(tokens[0]))
+      continue;
+    if(tokens[0] == "v")
+    {
+      tokens.erase(tokens.begin());
+      tokens.resize((std::min)(tokens.size(), std::size_t(3)));
+      const std::string problem = coordinate_problem(tokens, points.size(), first_line);
+      if(!problem.empty())
+        throw File_error(problem);
+      points.emplace_back(std::strtod(tokens[0].c_str(), nullptr), std::strtod(tokens[1].c_str(), nullptr),
+                          std::strtod(tokens[2].c_str(), nullptr));
+    }
+    else if(tokens[0] == "f")
+    {
+      polygons.emplace_back();
+      const std::string what = "face " + std::to_string(polygons.size() - 1) + where;
+      for(std::size_t j = 1; j < tokens.size(); ++j)
+        polygons.back().push_back(OBJ_vertex_index(tokens[j], points.size(), what));
+    }
+    else
+      throw File_error("line " + std::to_string(first_line) + " starts with '" + tokens[0] +
+                       "', not an OBJ statement");
+  }
 }
 
 // The first coordinate_problem() of the vertex lines of an ASCII PLY file of
@@ -360,20 +521,21 @@ inline std::string unreadable_PLY_coordinate(std::istream& in, std::size_t size)
   return std::string();
 }
 
-// Why CGAL's OBJ or ASCII PLY reader may have failed on a coordinate, which
-// it does not say: the first vertex coordinate that is not a finite double,
-// or a vertex with fewer than three coordinates. Empty if every vertex line
-// reads (or the PLY is binary): the failure was elsewhere.
-inline std::string unreadable_coordinate(std::istream& in, std::size_t size, const std::string& format)
+// Why CGAL's ASCII PLY reader may have failed on a coordinate, which it does
+// not say: the first vertex coordinate that is not a finite double, or a
+// vertex with fewer than three coordinates. Empty if every vertex line reads
+// (or the PLY is binary): the failure was elsewhere.
+inline std::string unreadable_coordinate(std::istream& in, std::size_t size)
 {
   in.clear();
   in.seekg(0, std::ios::beg);
-  return format == "obj" ? unreadable_OBJ_coordinate(in) : unreadable_PLY_coordinate(in, size);
+  return unreadable_PLY_coordinate(in, size);
 }
 
-// Reads the points and polygons of a file in `format` ("off", "obj" or "ply"),
-// checking every count first (read_OFF_soup(), check_PLY_counts()); throws
-// Invalid_input naming the source `name`.
+// Reads the points and polygons of a file in `format` ("off", "obj" or "ply"):
+// OFF and OBJ by the package (read_OFF_soup(), read_OBJ_soup()), PLY by
+// CGAL once check_PLY_counts() has checked every count; throws Invalid_input
+// naming the source `name`.
 template <typename Point>
 void read_polygon_soup(std::istream& in, const std::string& format, const std::string& name,
                        std::vector<Point>& points, std::vector<std::vector<std::size_t> >& polygons)
@@ -391,19 +553,24 @@ void read_polygon_soup(std::istream& in, const std::string& format, const std::s
   {
     throw Invalid_input("'" + name + "': " + e.what());
   }
-  in.clear();
-  in.seekg(0, std::ios::beg);
-
-  const auto quiet = CGAL::parameters::verbose(false);
-  const bool read = format == "off" ? true  // read above
-                  : format == "obj" ? CGAL::IO::read_OBJ(in, points, polygons, quiet)
-                                    : CGAL::IO::read_PLY(in, points, polygons, quiet);
-  if(!read)
+  std::string problem;
+  if(format == "obj")
   {
-    const std::string coordinate = unreadable_coordinate(in, size, format);
-    throw Invalid_input("'" + name + "' is not a readable polygon mesh (" +
-                        (coordinate.empty() ? std::string("corrupt or truncated file") : coordinate) + ")");
+    try { read_OBJ_soup(in, points, polygons); }
+    catch(const File_error& e) { problem = e.what(); }
   }
+  else if(format == "ply")
+  {
+    in.clear();
+    in.seekg(0, std::ios::beg);
+    if(!CGAL::IO::read_PLY(in, points, polygons, CGAL::parameters::verbose(false)))
+    {
+      problem = unreadable_coordinate(in, size);
+      if(problem.empty()) problem = "corrupt or truncated file";
+    }
+  }
+  if(!problem.empty())
+    throw Invalid_input("'" + name + "' is not a readable polygon mesh (" + problem + ")");
 }
 
 // Which of the `number_of_points` points the polygons use; throws
@@ -438,11 +605,18 @@ inline std::string lower_extension(const std::string& path)
 } // namespace internal
 
 /// \ingroup PkgTilableSurfacesRef
-/// Reads a polygon mesh in the format `format` ("off" for ASCII OFF, read by
-/// the package itself; "obj",
-/// or "ply" for ASCII or binary PLY) from `in`, which must be seekable (a
-/// file opened in binary mode, or a string stream), into `pm` (cleared first).
-/// `name` names the source in the messages.
+/// Reads a polygon mesh in the format `format` from `in`, which must be
+/// seekable (a file opened in binary mode, or a string stream), into `pm`
+/// (cleared first). `name` names the source in the messages. The formats:
+/// - "off": ASCII OFF, [ST][C][N][4][n]OFF (nOFF of dimension 3), read as the
+///   token stream it is: records may span lines, comments ('#' to the end of
+///   the line) may stand anywhere; what follows a vertex's coordinates or a
+///   face's indices on their line (normals, colours, texture coordinates) is
+///   ignored;
+/// - "obj": a byte-order mark, '\' line continuations, relative (negative)
+///   indices, "v/vt/vn" corners; statements other than "v" and "f" are ignored;
+/// - "ply": ASCII, binary little- or big-endian, faces as a list named
+///   vertex_indices or vertex_index of int or uint values.
 ///
 /// Unlike `CGAL::IO::read_polygon_mesh()`, it does not trust the data:
 /// - every count it declares (OFF header and face sizes, PLY element counts

@@ -9,7 +9,6 @@ orientation, against its cluster's S-quad by a Kabsch rigid fit of our own;
 the displacement; the cluster sizes. Then that bad input raises ValueError
 with the package's message, and that the GIL is released during the run.
 """
-import importlib.util
 import sys
 import threading
 import time
@@ -17,54 +16,23 @@ import unittest
 
 import numpy as np
 
+import numpy_checks
 import tilable_surfaces
+from numpy_checks import corner_of, mean_edge_length
 
 MESH, EXAMPLE = sys.argv[1], sys.argv[2]
 K = 7
 
 
-def load_example():
-    spec = importlib.util.spec_from_file_location("make_k_set_tilable_example", EXAMPLE)
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
-
-
-def mean_edge_length(vertices, faces):
-    edges = np.concatenate([faces[:, [i, (i + 1) % 4]] for i in range(4)])
-    edges = np.unique(np.sort(edges, axis=1), axis=0)
-    return np.linalg.norm(vertices[edges[:, 0]] - vertices[edges[:, 1]], axis=1).mean()
-
-
-def corner_of(i, o):
-    """The face vertex that template corner i goes to with orientation o."""
-    return (i + o) % 4 if o < 4 else (o - i) % 4
-
-
-def kabsch_deviation(template, target):
-    """Largest corner distance after the best proper rigid motion of template onto target."""
-    a = template - template.mean(axis=0)
-    b = target - target.mean(axis=0)
-    u, _, vt = np.linalg.svd(a.T @ b)
-    d = np.sign(np.linalg.det(vt.T @ u.T))
-    rotation = vt.T @ np.diag([1.0, 1.0, d]) @ u.T
-    return np.linalg.norm(a @ rotation.T - b, axis=1).max()
-
-
 def congruence_error(result, faces, corner=corner_of):
-    vertices = result["vertices"]
-    worst = 0.0
-    for f, face in enumerate(faces):
-        o = int(result["orientation"][f])
-        instance = vertices[[face[corner(i, o)] for i in range(4)]]
-        worst = max(worst, kabsch_deviation(result["s_quads"][result["cluster"][f]], instance))
-    return worst / mean_edge_length(vertices, faces)
+    return numpy_checks.congruence_error(result["vertices"], faces, result["cluster"], result["orientation"],
+                                         result["s_quads"], corner)
 
 
 class MakeKSetTilable(unittest.TestCase):
     @classmethod
     def setUpClass(cls):
-        cls.vertices, cls.faces = load_example().read_off(MESH)
+        cls.vertices, cls.faces = numpy_checks.read_mesh(MESH, EXAMPLE)
         cls.result = tilable_surfaces.make_k_set_tilable(cls.vertices, cls.faces, k=K, seed=3,
                                                          number_of_candidates=8, threads=1)
 

@@ -121,20 +121,17 @@ py::array_t<std::int64_t> int64_array(const std::vector<T>& values)
   return column<std::int64_t>(values, [](T v) { return v; });
 }
 
-// (K, 4, 3) corners of the panels; the fourth corner of a triangle is NaN.
-inline py::array_t<double> panels_array(const std::vector<TS::Panel>& panels)
+// d[key]: the (K, 4, 3) corners of the panels, the fourth corner of a
+// triangle NaN; d["tile_corners"]: (K,) 4 or 3.
+inline void add_panels(py::dict& d, const char* key, const std::vector<TS::Panel>& panels)
 {
   std::vector<double> corners;
   for(const TS::Panel& q : panels)
     for(int i = 0; i < 4; ++i)
       for(int c = 0; c < 3; ++c)
         corners.push_back(i < q.size() ? q[i][c] : std::numeric_limits<double>::quiet_NaN());
-  return numpy_array(corners, {py::ssize_t(panels.size()), 4, 3});
-}
-
-inline py::array_t<std::int64_t> corner_counts(const std::vector<TS::Panel>& panels)
-{
-  return column<std::int64_t>(panels, [](const TS::Panel& q) { return q.size(); });
+  d[key] = numpy_array(corners, {py::ssize_t(panels.size()), 4, 3});
+  d["tile_corners"] = column<std::int64_t>(panels, [](const TS::Panel& q) { return q.size(); });
 }
 
 // The coordinates of the vertices, in the order of the input arrays: an
@@ -172,8 +169,7 @@ inline void add_measure(py::dict& d, const TS::Tilability_measure& m)
   d["cluster_sizes"] = int64_array(m.cluster_sizes);
   d["allows_mirrored_panels"] = m.allows_mirrored_panels;
   d["cluster_mirrored_counts"] = int64_array(m.cluster_mirrored_counts);
-  d["s_quads"] = panels_array(m.s_quads);
-  d["tile_corners"] = corner_counts(m.s_quads);
+  add_panels(d, "s_quads", m.s_quads);
   d["number_of_distinct_molds"] = m.number_of_distinct_molds;
   d["cluster_molds"] = int64_array(m.cluster_molds);
   d["planarity_error"] = m.planarity_error;
@@ -240,8 +236,7 @@ inline py::dict clustering_dict(const TS::Clustering_result& r)
   d["path"] = r.path == TS::DESCRIPTOR_PATH ? "descriptor" : "exact";
   d["number_of_clusters"] = r.cluster_sizes.size();
   d["cluster_sizes"] = int64_array(r.cluster_sizes);
-  d["s_quads"] = panels_array(r.s_quads);
-  d["tile_corners"] = corner_counts(r.s_quads);
+  add_panels(d, "s_quads", r.s_quads);
   d["cluster_weights"] = vector_array(r.cluster_weights);
   d["total_weight"] = r.total_weight;
   d["weights_are_exact"] = r.weights_are_exact;
@@ -268,8 +263,7 @@ inline py::dict catalog_dict(const std::vector<TS::Tile>& tiles)
   d["instance_count"] = column<std::int64_t>(tiles, [](const TS::Tile& t) { return t.instance_count; });
   d["mirrored_count"] = column<std::int64_t>(tiles, [](const TS::Tile& t) { return t.mirrored_count; });
   d["worst_deviation"] = column<double>(tiles, [](const TS::Tile& t) { return t.worst_deviation; });
-  d["corners"] = panels_array(corners);
-  d["tile_corners"] = corner_counts(corners);
+  add_panels(d, "corners", corners);
   return d;
 }
 

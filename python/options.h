@@ -19,6 +19,7 @@
 
 #include <functional>
 #include <memory>
+#include <sstream>
 #include <string>
 #include <type_traits>
 #include <utility>
@@ -175,15 +176,45 @@ inline const std::vector<Option>& option_table()
   return table;
 }
 
-// The options of `function` that belong to `groups`, with their defaults:
-// the keyword part of its docstring.
-inline std::string options_help(unsigned groups)
+// Docstrings are wrapped at this width, as Python's help() does not wrap.
+constexpr std::size_t docstring_width = 92;
+
+// `text` with every line longer than docstring_width broken at spaces; the
+// continuation keeps the line's indentation plus `indent`.
+inline std::string wrapped(const std::string& text, const std::string& indent = "")
 {
-  std::string help = "Keyword arguments (default in brackets):\n";
-  for(const Option& o : option_table())
-    if(o.groups & groups)
-      help += "  " + std::string(o.name) + ": " + o.help + " [" +
-              std::string(py::repr(o.default_value(Options()))) + "]\n";
+  std::string out, line;
+  std::istringstream lines(text);
+  while(std::getline(lines, line))
+  {
+    const std::size_t text_start = line.find_first_not_of(' ');
+    const std::string margin = line.substr(0, text_start == std::string::npos ? 0 : text_start) + indent;
+    for(std::size_t cut = line.rfind(' ', docstring_width);
+        line.size() > docstring_width && cut != std::string::npos && cut > margin.size();
+        cut = line.rfind(' ', docstring_width))
+    {
+      out += line.substr(0, cut) + "\n";
+      line = margin + line.substr(cut + 1);
+    }
+    out += line + "\n";
+  }
+  return out;
+}
+
+// A docstring: `text`, then the keyword arguments of `groups` with their
+// defaults.
+inline std::string docstring(const std::string& text, unsigned groups = 0)
+{
+  std::string help = wrapped(text);
+  if(groups != 0)
+  {
+    help += "\nKeyword arguments [default]:\n";
+    for(const Option& o : option_table())
+      if(o.groups & groups)
+        help += wrapped("  " + std::string(o.name) + ": " + o.help + " [" +
+                          std::string(py::repr(o.default_value(Options()))) + "]",
+                        "    ");
+  }
   return help;
 }
 

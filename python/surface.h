@@ -75,7 +75,7 @@ public:
   std::size_t set_clustering(const py::object& clusters, const py::object& orientations, const std::string& policy)
   {
     const TS::Orientation_policy p = named_value(policy_names(), policy, "orientation_policy");
-    const std::vector<int> c = face_values(clusters, "cluster"), o = face_values(orientations, "orientation");
+    const std::vector<int> c = ids_per_face(clusters, "cluster"), o = ids_per_face(orientations, "orientation");
     return locked([&] {
       const auto index = get(boost::face_index, m_mesh);
       m_core.set_clustering(boost::make_iterator_property_map(c.begin(), index),
@@ -88,7 +88,8 @@ public:
   Core& core() { return m_core; }
 
 private:
-  std::vector<int> face_values(const py::object& values, const char* what) const
+  // One id per face, from an (m,) array.
+  std::vector<int> ids_per_face(const py::object& values, const char* what) const
   {
     const auto a = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(values);
     if(!a || a.ndim() != 1 || std::size_t(a.shape(0)) != m_mesh.number_of_faces())

@@ -34,10 +34,10 @@ const char* const class_doc = R"doc(A quad mesh on its way to a K-set tilable su
 
 vertices: (n, 3) float64; faces: (m, 4) integer vertex indices (-1 as the fourth of a
 triangle). Every step starts from the input positions (input_vertices()); a solve moves
-vertices(), restore_input() puts the input back. Edits are judged on the input quads. Steps
-take the keyword options of the last cluster() unless given again. Bad input or a step out of
-order raises ValueError with the package's message; the steps release the GIL, and one object
-runs one step at a time.)doc";
+vertices(), restore_input() puts the input back. Edits are judged on the input quads.
+Steps take the keyword options of the last cluster() unless given again. Bad input or a
+step out of order raises ValueError with the package's message; the steps release the GIL,
+and one object runs one step at a time.)doc";
 
 const char* const clustering_doc =
   "The clustering as a dict: 'path' ('exact' or 'descriptor'), 'number_of_clusters', "
@@ -62,8 +62,9 @@ void define_clustering(Surface_class& c)
           }));
         },
         py::arg("k"),
-        (std::string("Clusters the faces into k S-quads (forgets the previous clustering and result). ") +
-         clustering_doc + "\n\n" + options_help(CLUSTERING | RUN))
+        docstring(std::string("Clusters the faces into k S-quads (forgets the previous clustering and "
+                              "result). ") + clustering_doc,
+                  CLUSTERING | RUN)
           .c_str());
   c.def("initialize_clusters",
         [](Surface& s, int k, const py::kwargs& keywords) {
@@ -71,9 +72,9 @@ void define_clustering(Surface_class& c)
                                     [&](const auto& np) { return s.core().initialize_clusters(np); });
         },
         py::arg("k"),
-        (std::string("Stage 1 of cluster(): the threshold clustering; returns its number of clusters. "
-                     "Then merge_to_tile_count(), add_other_candidates(), select_candidate().\n\n") +
-         options_help(CLUSTERING | RUN))
+        docstring("Stage 1 of cluster(): the threshold clustering; returns its number of clusters. Then "
+                  "merge_to_tile_count(), add_other_candidates(), select_candidate().",
+                  CLUSTERING | RUN)
           .c_str());
   c.def("merge_to_tile_count", [](Surface& s) { return s.locked([&] { return s.core().merge_to_tile_count(); }); },
         "Stage 2: the beam of merges down to K; returns the size of the candidate pool.");
@@ -81,9 +82,11 @@ void define_clustering(Surface_class& c)
         "Stage 3: k-means, quad-strip, grid-segment and sweep candidates; returns the size of the pool.");
   c.def("select_candidate",
         [](Surface& s) { return clustering_dict(s.locked([&] { return s.core().select_candidate(); })); },
-        (std::string("Stage 4: the candidate of lowest score becomes the clustering. ") + clustering_doc).c_str());
+        docstring(std::string("Stage 4: the candidate of lowest score becomes the clustering. ") + clustering_doc)
+          .c_str());
   c.def("clustering", [](Surface& s) { return clustering_dict(s.locked([&] { return s.core().clustering(); })); },
-        (std::string("The current clustering, brought up to date after an edit. ") + clustering_doc).c_str());
+        docstring(std::string("The current clustering, brought up to date after an edit. ") + clustering_doc)
+          .c_str());
 }
 
 void define_editing(Surface_class& c)
@@ -130,14 +133,15 @@ void define_editing(Surface_class& c)
 
 void define_optimization(Surface_class& c)
 {
-  const std::string solve_help = std::string(solve_doc) + "\n\n";
+  const std::string solve_help = solve_doc;
   c.def("optimize",
         [](Surface& s, const py::kwargs& keywords) {
           const Options o = s.step_options(keywords, OPTIMIZATION | RUN, "optimize");
-          return optimization_dict(s.run(o, [&](const auto& np) { return TS::Optimization_result(s.core().optimize(np)); }));
+          return optimization_dict(
+            s.run(o, [&](const auto& np) { return TS::Optimization_result(s.core().optimize(np)); }));
         },
-        ("Moves the vertices from the input until every face fits its S-quad. " + solve_help +
-         options_help(OPTIMIZATION | RUN))
+        docstring("Moves the vertices from the input until every face fits its S-quad. " + solve_help,
+                  OPTIMIZATION | RUN)
           .c_str());
   c.def("optimize_closest",
         [](Surface& s, const py::kwargs& keywords) {
@@ -145,9 +149,9 @@ void define_optimization(Surface_class& c)
           return optimization_dict(
             s.run(o, [&](const auto& np) { return TS::Optimization_result(s.core().optimize_closest(np)); }));
         },
-        ("The tilable result closest to the input among the candidate clusterings, then improved by "
+        docstring("The tilable result closest to the input among the candidate clusterings, then improved by "
          "split-and-merge rounds (what make_k_set_tilable() runs); the clustering becomes the winner's. " +
-         solve_help + options_help(OPTIMIZATION | SEARCH | RUN))
+         solve_help, OPTIMIZATION | SEARCH | RUN)
           .c_str());
   c.def("refine_to",
         [](Surface& s, int k, const py::kwargs& keywords) {
@@ -157,8 +161,8 @@ void define_optimization(Surface_class& c)
             s.run(o, [&](const auto& np) { return TS::Optimization_result(s.core().refine_to(tiles, np)); }));
         },
         py::arg("k"),
-        ("Splits the largest clusters until there are k, then optimizes (an exact result stays exact). " +
-         solve_help + options_help(OPTIMIZATION | RUN))
+        docstring("Splits the largest clusters until there are k, then optimizes (an exact result stays exact). " +
+         solve_help, OPTIMIZATION | RUN)
           .c_str());
   c.def("predict_displacement",
         [](Surface& s, const py::kwargs& keywords) {
@@ -167,11 +171,13 @@ void define_optimization(Surface_class& c)
             s.run(o, [&](const auto& np) { return s.core().predict_displacement(np); });
           return py::dict(py::arg("max") = p.max, py::arg("rms") = p.rms, py::arg("max_euclidean") = p.max_euclidean);
         },
-        ("The displacement the default solver is predicted to need: 'max', 'rms' (closeness metric), "
-         "'max_euclidean'.\n\n" + options_help(OPTIMIZATION | RUN))
+        docstring("The displacement the default solver is predicted to need: 'max', 'rms' (closeness metric), "
+         "'max_euclidean'.", OPTIMIZATION | RUN)
           .c_str());
   c.def("optimization",
-        [](Surface& s) { return optimization_dict(s.locked([&] { return TS::Optimization_result(s.core().optimization()); })); },
+        [](Surface& s) {
+          return optimization_dict(s.locked([&] { return TS::Optimization_result(s.core().optimization()); }));
+        },
         "The result of the last solve, as optimize() returns it.");
 }
 
@@ -186,7 +192,9 @@ void define_results(Surface_class& c)
         "one), 'instance_count', 'mirrored_count', 'worst_deviation' (mesh units), 'corners' (K, 4, 3) in a "
         "canonical frame (t0 at the origin, t1 on +x, t2 in the xy plane), 'tile_corners'.");
   c.def("vertices",
-        [](Surface& s) { return points_array(s.locked([&] { return point_coordinates(s.mesh(), s.mesh().points()); })); },
+        [](Surface& s) {
+          return points_array(s.locked([&] { return point_coordinates(s.mesh(), s.mesh().points()); }));
+        },
         "(n, 3) current positions of the vertices.");
   c.def("input_vertices",
         [](Surface& s) {
@@ -195,7 +203,8 @@ void define_results(Surface_class& c)
         "(n, 3) input positions, against which every result is measured.");
   c.def("face_clusters",
         [](Surface& s) {
-          return vector_array(s.locked([&] { return face_values<std::int32_t>(s.mesh(), s.core().face_cluster_map()); }));
+          return vector_array(
+            s.locked([&] { return face_values<std::int32_t>(s.mesh(), s.core().face_cluster_map()); }));
         },
         "(m,) cluster of each face.");
   c.def("face_orientations",
@@ -212,7 +221,7 @@ void define_results(Surface_class& c)
 
 void define_surface(py::module_& module)
 {
-  Surface_class c(module, "KSetTilableSurface", class_doc);
+  Surface_class c(module, "KSetTilableSurface", docstring(class_doc).c_str());
   // Made with the GIL held: the object holds Python objects (its options).
   c.def(py::init([](const py::object& vertices, const py::object& faces) {
           return std::unique_ptr<Surface>(new Surface(mesh_of_arrays(vertices, faces)));

@@ -122,31 +122,26 @@ const char* const trials_doc =
   "'self_intersecting_face_pairs', 'refined_from' (the smaller K whose result was refined to this "
   "K, 0 if its own)";
 
-std::string doc(const std::string& text, unsigned groups)
-{
-  return text + (groups ? "\n\n" + options_help(groups) : std::string());
-}
-
 void define_functions(py::module_& module)
 {
+  const std::string make_doc =
+    std::string("Makes the quad mesh (vertices, faces) K-set tilable: at K = k, or at the smallest K "
+                "within max_deviation.") +
+    pipeline_doc +
+    "\nReturns a dict: 'vertices' (n, 3) moved positions, 'cluster' (m,) and 'orientation' (m,) of "
+    "each face, 'catalog' (as KSetTilableSurface.tile_catalog()), 'trials' (with max_deviation, every "
+    "K tried: " + trials_doc + "), 'choice_reason', 'validation_time', 'clustering_time', 'total_time', " +
+    optimization_doc + measure_doc + ".";
   module.def("make_k_set_tilable", &make_k_set_tilable, py::arg("vertices"), py::arg("faces"),
-             doc(std::string("Makes the quad mesh (vertices, faces) K-set tilable: at K = k, or at the "
-                             "smallest K within max_deviation.") + pipeline_doc +
-                   "\nReturns a dict: 'vertices' (n, 3) moved positions, 'cluster' (m,) and "
-                   "'orientation' (m,) of each face, 'catalog' (as KSetTilableSurface.tile_catalog()), "
-                   "'trials' (with max_deviation, every K tried: " + trials_doc + "), 'choice_reason', "
-                   "'validation_time', 'clustering_time', 'total_time', " + optimization_doc + measure_doc +
-                   ".",
-                 TILE_COUNT | PIPELINE)
-               .c_str());
+             docstring(make_doc, TILE_COUNT | PIPELINE).c_str());
+
+  const std::string curve_doc =
+    std::string("The K / deviation curve: make_k_set_tilable() at K = kmin, kmin + step, ..., kmax; more "
+                "molds never end farther than fewer (a better result of a smaller K is refined to K).") +
+    pipeline_doc + "\nReturns a dict of " + trials_doc +
+    "; a progress callable that stops a solve ends the curve there.";
   module.def("curve", &curve, py::arg("vertices"), py::arg("faces"), py::arg("kmin"), py::arg("kmax"),
-             py::arg("step") = 1,
-             doc(std::string("The K / deviation curve: make_k_set_tilable() at K = kmin, kmin + step, ..., "
-                             "kmax; more molds never end farther than fewer (a better result of a smaller K "
-                             "is refined to K).") + pipeline_doc + "\nReturns a dict of " + trials_doc +
-                   "; a progress callable that stops a solve ends the curve there.",
-                 PIPELINE)
-               .c_str());
+             py::arg("step") = 1, docstring(curve_doc, PIPELINE).c_str());
 }
 
 } // namespace

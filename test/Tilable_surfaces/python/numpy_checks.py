@@ -1,9 +1,12 @@
-"""Independent recomputations in numpy of what the module reports, for the tests.
+"""Helpers of the Python tests: independent recomputations in numpy of what the module
+reports, and a measure of whether a call releases the GIL.
 
 Quad meshes only: faces is an (m, 4) integer array. Orientation o puts template
 corner i on face corner (i + o) % 4 for o < 4, (o - i) % 4 otherwise.
 """
 import importlib.util
+import threading
+import time
 
 import numpy as np
 
@@ -149,3 +152,27 @@ def hausdorff_distance(result, vertices, faces):
     to_result = point_triangle_distances(samples_in, *triangles_out).min(axis=1).max()
     diagonal = np.linalg.norm(vertices.max(axis=0) - vertices.min(axis=0))
     return max(to_input, to_result) / diagonal
+
+
+def longest_pause(run):
+    """(longest pause this thread saw, duration of run()) while run() ran in another thread: a
+    call that releases the GIL lets this thread go on, the pause staying much shorter than it."""
+    span = {}
+
+    def work():
+        span["start"] = time.perf_counter()
+        try:
+            run()
+        finally:
+            span["end"] = time.perf_counter()
+
+    worker = threading.Thread(target=work)
+    pause, last = 0.0, time.perf_counter()
+    worker.start()
+    while worker.is_alive():
+        now = time.perf_counter()
+        if "start" in span:
+            pause = max(pause, now - last)
+        last = now
+    worker.join()
+    return pause, span["end"] - span["start"]

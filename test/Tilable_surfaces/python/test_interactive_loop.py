@@ -12,8 +12,6 @@ point-to-triangle distances, the molds by fits of the S-quads. Then the progress
 the deviation budget, the K curve and bad input.
 """
 import sys
-import threading
-import time
 import unittest
 
 import numpy as np
@@ -28,8 +26,9 @@ K = 7
 FAST = dict(seed=3, number_of_candidates=8, threads=1)
 FAST_SEARCH = dict(optimized_candidates=1, improvement_rounds=0)
 # Deviation budget (a fraction of the bounding-box diagonal) and the largest K tried for it.
-BUDGET, BUDGET_KMAX = 0.25, 12
-# Round-off allowed between the program's measures and numpy's, relative.
+BUDGET, BUDGET_KMAX = 0.32, 8
+# Round-off allowed between the program's measures and numpy's: relative, or absolute for
+# congruence errors, which are near 0.
 ROUND_OFF = 1e-9
 PHASES = {"validation", "clustering", "optimization", "threshold clustering", "exact sweeps", "merges",
           "other candidates", "orientations", "sweep candidate", "displacement prediction",
@@ -253,24 +252,11 @@ class ProgressTest(unittest.TestCase):
     def test_the_gil_is_free_for_other_threads_while_the_callable_is_called(self):
         s = ts.KSetTilableSurface(VERTICES, FACES)
         s.cluster(K, **FAST)
-        calls, span = [], {}
-
-        def work():
-            span["start"] = time.perf_counter()
-            s.optimize_closest(progress=lambda *event: calls.append(event), **FAST_SEARCH)
-            span["end"] = time.perf_counter()
-
-        worker = threading.Thread(target=work)
-        longest_pause, last = 0.0, time.perf_counter()
-        worker.start()
-        while worker.is_alive():
-            now = time.perf_counter()
-            if "start" in span:
-                longest_pause = max(longest_pause, now - last)
-            last = now
-        worker.join()
+        calls = []
+        pause, duration = nc.longest_pause(
+            lambda: s.optimize_closest(progress=lambda *event: calls.append(event), **FAST_SEARCH))
         self.assertTrue(calls)
-        self.assertLess(longest_pause, 0.5 * (span["end"] - span["start"]))
+        self.assertLess(pause, 0.5 * duration)
 
 
 class DeviationBudgetTest(unittest.TestCase):
@@ -295,7 +281,7 @@ class DeviationBudgetTest(unittest.TestCase):
             self.assertFalse(meets[below[0]])
 
     def test_curve(self):
-        kmin, kmax, step = 5, 9, 2
+        kmin, kmax, step = 4, 8, 2
         c = ts.curve(VERTICES, FACES, kmin, kmax, step, **FAST, **FAST_SEARCH)
         np.testing.assert_array_equal(c["K"], np.arange(kmin, kmax + 1, step))
         self.assertEqual(c["is_tilable"].dtype, np.bool_)

@@ -268,7 +268,7 @@ public:
     };
     initialize(result);
     stage("threshold clustering");
-    const bool sweep_ends_search = !run_generators(Exact_start_generators(), result);
+    const bool sweep_ends_search = make_exact_start_candidates(result);
     stage("exact sweeps");
     if(!sweep_ends_search)
     {
@@ -277,8 +277,6 @@ public:
       add_other_candidates(result);
       stage("other candidates");
     }
-    for(const Generated_candidate& candidate : m_pooled_last)
-      pool(result, candidate);
     Cluster_shapes shapes = select(result);
     stage("orientations");
     return shapes;
@@ -299,27 +297,40 @@ public:
   }
 
   // 2. The candidates solved first from their exact start
-  // (Exact_start_generators, the sweeps) are made first and pooled last.
-  // When one ends the search (Clustering_settings::sweep_ends_search), the
-  // others would never be optimized and are not made: the beam of merges
-  // costs O(K^2) a step (a 100k-quad grid at K = 4,000: 245 s) and the
-  // other generators O(F) each (a 100k-quad roof: 44 s).
+  // (Exact_start_generators, the sweeps), made once, pooled by select().
+  // Whether one ends the search (Clustering_settings::sweep_ends_search):
+  // run() then makes no other, since none would be optimized, and the beam
+  // of merges costs O(K^2) a step (a 100k-quad grid at K = 4,000: 245 s)
+  // and the other generators O(F) each (a 100k-quad roof: 44 s).
+  bool make_exact_start_candidates(Clustering_result& result)
+  {
+    if(!m_exact_start_made)
+      m_sweep_ends_search = !run_generators(Exact_start_generators(), result);
+    m_exact_start_made = true;
+    return m_sweep_ends_search;
+  }
 
   // 3. The last beam of binary merges down to K (Merge_generators).
   void merge_to_tile_count(Clustering_result& result) { run_generators(Merge_generators(), result); }
 
-  // 4. The twist separations of the candidates of step 2, then the other
-  // candidates (Other_generators).
+  // 4. The twist separations of the candidates of step 2 (made here when
+  // the stages are run one by one), then the other candidates
+  // (Other_generators).
   void add_other_candidates(Clustering_result& result)
   {
+    make_exact_start_candidates(result);
     for(const Generated_candidate& candidate : m_pooled_last)
       pool_twist_separation(result, candidate.label);
     run_generators(Other_generators(), result);
   }
 
-  // 5. The candidate of lowest score, its S-quads and orientations.
-  Cluster_shapes select(Clustering_result& result) const
+  // 5. The candidates of step 2 pooled, then the candidate of lowest score,
+  // its S-quads and orientations.
+  Cluster_shapes select(Clustering_result& result)
   {
+    for(const Generated_candidate& candidate : m_pooled_last)
+      pool(result, candidate);
+    m_pooled_last.clear();
     choose(result);
     return finish(result);
   }
@@ -528,6 +539,7 @@ private:
   CGAL::Random m_random;
   const bool m_triangles;  // the mesh has triangles as well as quads (or only triangles)
   std::vector<Generated_candidate> m_pooled_last;  // solved first from their exact start: pooled after the others
+  bool m_exact_start_made = false, m_sweep_ends_search = false;
   bool m_exact = true;
   std::vector<double> m_affinity;  // n x n dissimilarities, exact path only
   Initial_clustering m_init;

@@ -27,7 +27,10 @@ namespace tilable_surfaces_python {
 class Progress_visitor : public TS::Default_visitor
 {
 public:
-  explicit Progress_visitor(py::object callback) : m_callback(std::move(callback)) {}
+  // `in_callback`, if given, is true while the callable runs.
+  Progress_visitor(py::object callback, std::atomic<bool>* in_callback)
+    : m_callback(std::move(callback)), m_in_callback(in_callback)
+  {}
   Progress_visitor(const Progress_visitor&) = delete;
   Progress_visitor& operator=(const Progress_visitor&) = delete;
 
@@ -59,6 +62,7 @@ private:
       if(PyErr_CheckSignals() != 0) throw py::error_already_set();
       if(!m_callback.is_none())
       {
+        const Flag_scope scope(m_in_callback);
         const py::object answer = call();
         const int go_on = answer.is_none() ? 1 : PyObject_IsTrue(answer.ptr());
         if(go_on < 0) throw py::error_already_set();
@@ -74,23 +78,41 @@ private:
     return !m_stop;
   }
 
+  // Sets a flag for its lifetime.
+  struct Flag_scope
+  {
+    explicit Flag_scope(std::atomic<bool>* flag) : flag(flag) { if(flag) *flag = true; }
+    ~Flag_scope() { if(flag) *flag = false; }
+    std::atomic<bool>* flag;
+  };
+
   py::object m_callback;
+  std::atomic<bool>* m_in_callback;
   std::atomic<bool> m_stop{false};
   std::atomic<bool> m_failed{false};  // the callable is not called again
   std::exception_ptr m_error;         // written under the GIL
 };
 
+// What keeps the steps of one object apart: a step holds `mutex`, and
+// `in_callback` tells that its progress callable is running (a step it
+// called would wait for the mutex forever).
+struct Step_guard
+{
+  std::mutex mutex;
+  std::atomic<bool> in_callback{false};
+};
+
 // f(np), np the named parameters of `o` for a mesh of `faces` faces, run
-// without the GIL (under `lock` if given), with o's threads and progress;
+// without the GIL (under `guard` if given), with o's threads and progress;
 // the progress callable's exception, if any, is raised after.
 template <typename F>
-auto run_without_gil(const Options& o, std::size_t faces, std::mutex* lock, const F& f)
+auto run_without_gil(const Options& o, std::size_t faces, Step_guard* guard, const F& f)
 {
-  Progress_visitor progress(o.progress);
+  Progress_visitor progress(o.progress, guard != nullptr ? &guard->in_callback : nullptr);
   auto result = [&] {
     py::gil_scoped_release release;
-    std::unique_lock<std::mutex> guard;
-    if(lock != nullptr) guard = std::unique_lock<std::mutex>(*lock);
+    std::unique_lock<std::mutex> lock;
+    if(guard != nullptr) lock = std::unique_lock<std::mutex>(guard->mutex);
     Thread_cap cap(o.threads);
     return f(step_parameters(o, faces, progress));
   }();

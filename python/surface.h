@@ -20,7 +20,8 @@ namespace tilable_surfaces_python {
 // Owns the mesh the core refers to. Every step runs without the GIL and
 // under the object's lock, so that two Python threads cannot edit the
 // state at once (the GIL is released before the lock is taken: a progress
-// callback needs the GIL while the lock is held).
+// callback needs the GIL while the lock is held). A step called from the
+// progress callable of a running one raises instead of waiting forever.
 class Surface
 {
   typedef TS::K_set_tilable_surface<CGAL::Parallel_if_available_tag, Mesh> Core;
@@ -34,8 +35,11 @@ public:
   template <typename F>
   auto locked(const F& f)
   {
+    if(m_guard.in_callback)
+      invalid("KSetTilableSurface: the progress callable of a step cannot use the object; "
+              "keep what it receives, and look at the object once the step returns");
     py::gil_scoped_release release;
-    std::lock_guard<std::mutex> lock(m_mutex);
+    std::lock_guard<std::mutex> lock(m_guard.mutex);
     return f();
   }
 
@@ -53,7 +57,7 @@ public:
   template <typename F>
   auto run(const Options& o, const F& f)
   {
-    return run_without_gil(o, m_mesh.number_of_faces(), &m_mutex, f);
+    return run_without_gil(o, m_mesh.number_of_faces(), &m_guard, f);
   }
 
   // A step that starts a clustering with K = k: f(np) with K in np. Its
@@ -98,7 +102,7 @@ private:
     return std::vector<int>(a.data(), a.data() + a.shape(0));
   }
 
-  std::mutex m_mutex;
+  Step_guard m_guard;
   Mesh m_mesh;  // before m_core, which refers to it
   Core m_core;
   Options m_options;  // of the last cluster(), which the later steps reuse

@@ -37,7 +37,7 @@ triangle). Every step starts from the input positions (input_vertices()); a solv
 vertices(), restore_input() puts the input back. Edits are judged on the input quads.
 Steps take the keyword options of the last cluster() unless given again. Bad input or a
 step out of order raises ValueError with the package's message; the steps release the GIL,
-and one object runs one step at a time.)doc";
+and one object runs one step at a time (its progress callable cannot call it: ValueError).)doc";
 
 const char* const clustering_doc =
   "The clustering as a dict: 'path' ('exact' or 'descriptor'), 'number_of_clusters', "

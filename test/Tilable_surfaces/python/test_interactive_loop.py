@@ -249,6 +249,14 @@ class ProgressTest(unittest.TestCase):
             s.optimize(progress=fails)
         self.assertTrue(s.optimize()["is_tilable"])
 
+    def test_the_callable_cannot_use_the_object_of_its_step(self):
+        s = ts.KSetTilableSurface(VERTICES, FACES)
+        s.cluster(K, **FAST)
+        with self.assertRaises(ValueError) as caught:
+            s.optimize(progress=lambda *event: s.vertices())
+        self.assertIn("progress callable", str(caught.exception))
+        self.assertTrue(s.optimize()["is_tilable"])
+
     def test_the_gil_is_free_for_other_threads_while_the_callable_is_called(self):
         s = ts.KSetTilableSurface(VERTICES, FACES)
         s.cluster(K, **FAST)

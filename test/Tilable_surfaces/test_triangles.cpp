@@ -12,8 +12,6 @@
 
 #include <gtest/gtest.h>
 
-#include <iostream>
-
 #include <cmath>
 #include <limits>
 #include <map>
@@ -161,8 +159,7 @@ TEST(Triangles, OptimizationMakesTheHouseTwoMoldsAndStaysClose)
   EXPECT_EQ(m.s_quads[0].size(), 4);
   EXPECT_EQ(m.s_quads[1].size(), 3);
   // Moved, but less than undoing the perturbation that made it untileable
-  // would move it (the apex's, the larger).
-  std::cout << "[ numbers  ] house, optimized: max displacement " << m.max_displacement << "\n";
+  // would move it (the apex's, 0.27, the larger; measured 0.099).
   EXPECT_GT(m.max_displacement, 1e-3);
   EXPECT_LT(m.max_displacement, apex.norm());
 }
@@ -233,8 +230,7 @@ TEST(Triangles, TheHouseBecomesOneQuadTileAndOneTriangleTile)
   EXPECT_EQ(c.cluster[Face(0)], c.cluster[Face(1)]);
   EXPECT_EQ(c.cluster[Face(2)], c.cluster[Face(3)]);
   EXPECT_LE(congruence_by_umeyama(mesh, c.cluster, c.orientation), 1e-6);
-  // Less than undoing the apex's perturbation would move it.
-  std::cout << "[ numbers  ] house, pipeline: max displacement " << r.optimization.measure.max_displacement << "\n";
+  // Less than undoing the apex's perturbation would move it (measured 0.068).
   EXPECT_LT(r.optimization.measure.max_displacement, apex.norm());
 }
 

@@ -1,8 +1,12 @@
 # Checks that every test of the build directory BUILD_DIR is labelled either
 # `fast` or `slow` (not both) and has a TIMEOUT: `ctest -L fast` and the
 # sanitizer run select by these labels, and a test without a time limit can
-# hang a run. Run as cmake -DBUILD_DIR=... -P check_test_labels.cmake.
-execute_process(COMMAND ${CMAKE_CTEST_COMMAND} --show-only=json-v1 WORKING_DIRECTORY ${BUILD_DIR}
+# hang a run. Run as cmake -DBUILD_DIR=... -DWORK_DIR=... -P check_test_labels.cmake.
+# ctest lists the tests from WORK_DIR, whose test file only includes BUILD_DIR's: the
+# log it writes there would otherwise replace the log of the run this check is part of.
+file(MAKE_DIRECTORY ${WORK_DIR})
+file(WRITE ${WORK_DIR}/CTestTestfile.cmake "subdirs(\"${BUILD_DIR}\")\n")
+execute_process(COMMAND ${CMAKE_CTEST_COMMAND} --show-only=json-v1 WORKING_DIRECTORY ${WORK_DIR}
                 OUTPUT_VARIABLE json ERROR_QUIET RESULT_VARIABLE status)
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "ctest --show-only failed in ${BUILD_DIR}")

@@ -16,6 +16,9 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
+#include <limits>
+
 #include <map>
 #include <string>
 #include <vector>
@@ -82,7 +85,17 @@ TEST(MeshKinds, ClosedTorusHasNoBoundaryAndBecomesTilable)
   const TS::K_set_tilable_result r = tile_and_check(torus, 2);
   EXPECT_TRUE(CGAL::is_closed(torus));
   EXPECT_GT(max_coordinate_change(input, torus), 1e-3) << "the 5 rings of quads into 2 tiles";
-  EXPECT_LT(r.optimization.measure.max_approximation_error, 0.2);
+  // Closer to the input than the tube's radius (about the y axis, 0.12 of
+  // the diagonal; measured 0.074): the tube is not collapsed onto its core.
+  double inner = std::numeric_limits<double>::max(), outer = 0;
+  for(auto v : vertices(input))
+  {
+    const double rho = std::hypot(input.point(v).x(), input.point(v).z());
+    inner = (std::min)(inner, rho);
+    outer = (std::max)(outer, rho);
+  }
+  const TS::Tilability_measure& m = r.optimization.measure;
+  EXPECT_LT(m.hausdorff_distance * m.input_bbox_diagonal, 0.5 * (outer - inner));
 }
 
 // With items with ids: the package indexes edges by halfedge id (without, a

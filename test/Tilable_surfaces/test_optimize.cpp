@@ -308,10 +308,10 @@ TEST(Optimize, PaperConjugateGradientLowersTheConstraintTerms)
   EXPECT_GT(r.iterations, 0);
 }
 
-// User manual, section Optimization: on the same clustering the constrained solver reaches
-// the tolerance, moving less than the paper's penalty method, whose
-// weights mu1 = mu2 are lowered from the default until it reaches the same
-// congruence; if none does, it must not claim convergence.
+// User manual, section Optimization: on the same clustering the constrained
+// solver reaches the tolerance, where the paper's penalty method, its weights
+// mu1 = mu2 lowered from the default, does not on these fixtures (measured:
+// 0.05 to 0.09 congruence error on both) and must not claim convergence.
 namespace {
 
 void expect_constrained_solver_beats_paper_method(const std::string& what, Mesh& mesh,
@@ -322,7 +322,6 @@ void expect_constrained_solver_beats_paper_method(const std::string& what, Mesh&
   print(what + " (Gauss-Newton)", mesh, r);
   EXPECT_TRUE(r.converged);
   EXPECT_LE(pairwise_congruence_error(mesh, c), 2e-6);
-  bool paper_reached_tolerance = false;
   for(double weight : {1e-4, 1e-6, 1e-8})
   {
     Mesh paper = input;
@@ -336,16 +335,9 @@ void expect_constrained_solver_beats_paper_method(const std::string& what, Mesh&
     std::ostringstream label;
     label << what << " (paper CG, mu1 = mu2 = " << weight << ")";
     print(label.str(), paper, rp);
-    if(pairwise_congruence_error(paper, cp) <= 1e-6)
-    {
-      paper_reached_tolerance = true;
-      EXPECT_LT(r.measure.max_displacement, rp.measure.max_displacement);
-      break;
-    }
-    EXPECT_FALSE(rp.converged);
+    EXPECT_GT(pairwise_congruence_error(paper, cp), 1e-6) << label.str();
+    EXPECT_FALSE(rp.converged) << label.str();
   }
-  if(!paper_reached_tolerance)
-    std::cout << "[ numbers  ] " << what << ": the paper's method does not reach 1e-6\n";
 }
 
 } // namespace

@@ -263,18 +263,15 @@ TEST(ReadQuadMesh, UnreadableCoordinatesAreNamed)
   EXPECT_TRUE(contains(huge, "vertex 2 (line 3) has '1e400', too large for a double")) << huge;
   const std::string short_vertex = refusal(write(dir, "short.obj", "v 0 0\n" + square));
   EXPECT_TRUE(contains(short_vertex, "vertex 0 (line 1) has fewer than 3 coordinates")) << short_vertex;
-  const std::string ply =
-    refusal(write(dir, "inf.ply", "ply\nformat ascii 1.0\nelement vertex 4\nproperty double x\n"
-                                  "property double y\nproperty double z\nelement face 1\n"
-                                  "property list uchar int vertex_indices\nend_header\n"
-                                  "0 0 0\n1 0 0\n1 1 inf\n0 1 0\n4 0 1 2 3\n"));
+  // An ASCII PLY square whose header ends on line 9.
+  auto square_ply = [](const std::string& body) {
+    return "ply\nformat ascii 1.0\nelement vertex 4\nproperty double x\nproperty double y\n"
+           "property double z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n" + body;
+  };
+  const std::string ply = refusal(write(dir, "inf.ply", square_ply("0 0 0\n1 0 0\n1 1 inf\n0 1 0\n4 0 1 2 3\n")));
   EXPECT_TRUE(contains(ply, "vertex 2 (line 12) has 'inf', not a finite number")) << ply;
   // A failure elsewhere (a face index that is not a number) keeps the general message.
-  const std::string letter =
-    refusal(write(dir, "letter.ply", "ply\nformat ascii 1.0\nelement vertex 4\nproperty double x\n"
-                                     "property double y\nproperty double z\nelement face 1\n"
-                                     "property list uchar int vertex_indices\nend_header\n"
-                                     "0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 x\n"));
+  const std::string letter = refusal(write(dir, "letter.ply", square_ply("0 0 0\n1 0 0\n1 1 0\n0 1 0\n4 0 1 2 x\n")));
   EXPECT_TRUE(contains(letter, "(corrupt or truncated file)")) << letter;
 }
 

@@ -6,6 +6,7 @@
 
 #include "congruence_check.h"
 #include "grid_mesh.h"
+#include "hausdorff_oracle.h"
 #include "optimization_test_helpers.h"
 #include "sweep_pipeline_check.h"
 #include "tube_mesh.h"
@@ -301,11 +302,13 @@ TEST(SweepStart, ColumnRunsNeverCollapse)
     return shortest;
   };
   const double input = shortest_edge(TSI::read_points(m, get(CGAL::vertex_point, m), get(CGAL::vertex_index, m)));
-  for(const std::vector<std::size_t>& label : sweeps(m, 5))
+  const std::vector<std::vector<std::size_t> > labels = sweeps(m, 5);
+  ASSERT_FALSE(labels.empty());
+  for(const std::vector<std::size_t>& label : labels)
   {
     const TSI::Point_matrix start = start_of(m, label);
-    if(start.rows() > 0)
-      EXPECT_GE(shortest_edge(start), 0.5 * input);
+    ASSERT_GT(start.rows(), 0) << "every sweep clustering of the fan has its start";
+    EXPECT_GE(shortest_edge(start), 0.5 * input);
   }
 }
 
@@ -448,10 +451,11 @@ TEST(SweepStart, PipelineEndsTilableEvenWithoutIterations)
 // A solve from the exact start is kept only if it ends exact and closer to
 // the input (symmetric Hausdorff distance) than the start: whatever the
 // number of iterations, the result is tilable, checked independently, and no
-// farther than the swept surface.
+// farther than the swept surface, by the package's measure and by the oracle.
 TEST(SweepStart, SolveFromTheStartNeverEndsFarther)
 {
   const Mesh input = growing_horn();
+  const double tolerance = hausdorff_oracle::sampling_tolerance(input);
   for(std::size_t k : {8u, 19u})
   {
     const std::vector<std::size_t> label = loop_sweeps(input, k, around).at(0);
@@ -461,6 +465,7 @@ TEST(SweepStart, SolveFromTheStartNeverEndsFarther)
     const double start_distance =
       TS::measure_tilability(swept, input, TS::parameters::face_cluster_map(s.cluster).face_orientation_map(s.orientation))
         .hausdorff_distance;
+    const double start_by_oracle = hausdorff_oracle::distances(swept, input).hausdorff();
     for(int iterations : {1, 3, 10, 30, 60})
     {
       Mesh m = input;
@@ -470,6 +475,8 @@ TEST(SweepStart, SolveFromTheStartNeverEndsFarther)
       EXPECT_LE(congruence_by_umeyama(m, c.cluster, c.orientation), 1e-6) << "K = " << k << ", " << iterations;
       EXPECT_LE(TS::measure_tilability(m, input, maps).hausdorff_distance, start_distance)
         << "K = " << k << ", " << iterations << " iterations";
+      EXPECT_LE(hausdorff_oracle::distances(m, input).hausdorff(), start_by_oracle + tolerance)
+        << "K = " << k << ", " << iterations << " iterations, by the oracle";
     }
   }
 }

@@ -143,7 +143,8 @@ TEST(Triangles, EdgeSharingGraphOfTheHouseCountedByHand)
 
 TEST(Triangles, OptimizationMakesTheHouseTwoMoldsAndStaysClose)
 {
-  const Mesh input = house(Vector3d(0.15, -0.1, 0.2), Vector3d(0.1, 0.05, -0.1));
+  const Vector3d apex(0.15, -0.1, 0.2);
+  const Mesh input = house(apex, Vector3d(0.1, 0.05, -0.1));
   Mesh mesh = input;
   const Clustering c = house_clustering(mesh);
   ASSERT_GT(congruence_by_umeyama(mesh, c.cluster, c.orientation), 1e-2) << "the input is not tiled";
@@ -157,8 +158,10 @@ TEST(Triangles, OptimizationMakesTheHouseTwoMoldsAndStaysClose)
   ASSERT_EQ(m.s_quads.size(), 2u);
   EXPECT_EQ(m.s_quads[0].size(), 4);
   EXPECT_EQ(m.s_quads[1].size(), 3);
-  // Moved, but no farther than the perturbation that made it untileable.
-  EXPECT_LT(m.max_displacement, 0.3);
+  // Moved, but less than undoing the perturbation that made it untileable
+  // would move it (the apex's, 0.27, the larger; measured 0.099).
+  EXPECT_GT(m.max_displacement, 1e-3);
+  EXPECT_LT(m.max_displacement, apex.norm());
 }
 
 TEST(Triangles, OrientationsAndClustersThatDoNotFitATriangleAreRefused)
@@ -214,7 +217,8 @@ bool clusters_are_pure(const Mesh& mesh, const Face_int_map& cluster)
 
 TEST(Triangles, TheHouseBecomesOneQuadTileAndOneTriangleTile)
 {
-  const Mesh input = house(Vector3d(0.15, -0.1, 0.2), Vector3d(0.1, 0.05, -0.1));
+  const Vector3d apex(0.15, -0.1, 0.2);
+  const Mesh input = house(apex, Vector3d(0.1, 0.05, -0.1));
   Mesh mesh = input;
   Clustering c = add_clustering_maps(mesh);
   const TS::K_set_tilable_result r =
@@ -226,7 +230,8 @@ TEST(Triangles, TheHouseBecomesOneQuadTileAndOneTriangleTile)
   EXPECT_EQ(c.cluster[Face(0)], c.cluster[Face(1)]);
   EXPECT_EQ(c.cluster[Face(2)], c.cluster[Face(3)]);
   EXPECT_LE(congruence_by_umeyama(mesh, c.cluster, c.orientation), 1e-6);
-  EXPECT_LT(r.optimization.measure.max_displacement, 0.3);
+  // Less than undoing the apex's perturbation would move it (measured 0.068).
+  EXPECT_LT(r.optimization.measure.max_displacement, apex.norm());
 }
 
 TEST(Triangles, OneTileIsRefusedWhenTheMeshHasQuadsAndTriangles)

@@ -2,7 +2,8 @@
 //
 //   k_set_tilable INPUT (-k K | --max-deviation D [-k KMAX]) -o OUTPUT.ply
 //                 [--report REPORT.json] [--catalog TILES.csv|TILES.json] [--curve CURVE.csv]
-//                 [--components EDGES.ply] [--distance-weight W] [--fairness-weight W]
+//                 [--components EDGES.ply] [--html REPORT.html] [--mold-sheets DIR]
+//                 [--distance-weight W] [--fairness-weight W]
 //                 [--tangential-weight W] [--optimized-candidates N] [--improvement-rounds N]
 //                 [--candidates N] [--solver gauss-newton|paper-cg] [--fixed-boundary]
 //                 [--iterations N] [--time-limit SECONDS] [--seed S] [--threads N] [--mirror]
@@ -13,18 +14,21 @@
 // moved mesh (PLY with per-face cluster, orientation and colour), a JSON
 // report of what was measured, and the tile catalog. With --max-deviation,
 // K is the smallest whose result is tilable within D of the input; --sweep
-// writes the K / deviation curve instead of a mesh. Exit codes: 0 done,
+// writes the K / deviation curve instead of a mesh. --html writes one
+// self-contained page to open in a browser, --mold-sheets an SVG per tile. Exit codes: 0 done,
 // 2 bad input or arguments (nothing written), 1 internal failure.
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
+#include <CGAL/Tilable_surfaces/IO/mold_sheet.h>
 #include <CGAL/Tilable_surfaces/IO/read_polygon_mesh.h>
 #include <CGAL/Tilable_surfaces/IO/report.h>
 #include <CGAL/Tilable_surfaces/IO/tile_catalog.h>
 #include <CGAL/Tilable_surfaces/IO/write_OBJ.h>
 #include <CGAL/Tilable_surfaces/IO/write_PLY.h>
+#include <CGAL/Tilable_surfaces/IO/write_HTML_report.h>
 #include <CGAL/Tilable_surfaces/IO/write_edge_components_PLY.h>
 #include <CGAL/Tilable_surfaces/IO/write_tile_count_curve.h>
 #include <CGAL/Tilable_surfaces/k_set_tilable_curve.h>
@@ -64,7 +68,7 @@ struct Usage_error : std::runtime_error
 
 struct Options
 {
-  std::string input, output, report, catalog, components, sweep, curve;
+  std::string input, output, report, catalog, components, sweep, curve, html, mold_sheets;
   int k = 0;
   double max_deviation = -1; // negative: K is given
   std::vector<std::size_t> sweep_k;
@@ -151,6 +155,14 @@ Options parse(int argc, char** argv, bool& help)
     ("catalog", po::value<std::string>(&o.catalog), "tile catalog, .csv or .json")
     ("components", po::value<std::string>(&o.components),
      "PLY picture of the edge-sharing components (paper Fig. 6)")
+    ("html", po::value<std::string>(&o.html),
+     "one self-contained HTML page to open in a browser, offline: the result in 3D by tile or by "
+     "deviation with the input as a ghost (click a panel: its tile, mold, instances, deviation), the "
+     "mold sheets, the summary and parameters, the K tried")
+    ("mold-sheets", po::value<std::string>(&o.mold_sheets),
+     "directory (created if missing) for one SVG mold sheet per tile, tile_000.svg ...: the tile drawn "
+     "in model units with a scale bar, corners t0..t3 numbered as the PLY's orientations number them, "
+     "edge and diagonal lengths, corner angles, twist, instances")
     ("distance-weight", po::value<double>(&o.distance_weight)->default_value(o.distance_weight),
      "mu1, closeness to the input")
     ("fairness-weight", po::value<double>(&o.fairness_weight),
@@ -217,8 +229,10 @@ Options parse(int argc, char** argv, bool& help)
       throw Usage_error("--sweep runs its own K: give neither -k nor --max-deviation");
     if(o.curve.empty())
       throw Usage_error("--sweep needs --curve CURVE.csv");
-    if(!o.output.empty() || !o.report.empty() || !o.catalog.empty() || !o.components.empty())
-      throw Usage_error("--sweep writes the curve only: no -o, --report, --catalog or --components");
+    if(!o.output.empty() || !o.report.empty() || !o.catalog.empty() || !o.components.empty() ||
+       !o.html.empty() || !o.mold_sheets.empty())
+      throw Usage_error("--sweep writes the curve only: no -o, --report, --catalog, --components, --html or "
+                        "--mold-sheets (--max-deviation with --html draws the K it tried)");
   }
   else
   {
@@ -240,6 +254,8 @@ Options parse(int argc, char** argv, bool& help)
     throw Usage_error("the catalog '" + o.catalog + "' must end in .csv or .json");
   if(!o.report.empty() && extension(o.report) != "json")
     throw Usage_error("the report '" + o.report + "' must end in .json");
+  if(!o.html.empty() && extension(o.html) != "html" && extension(o.html) != "htm")
+    throw Usage_error("the HTML report '" + o.html + "' must end in .html or .htm");
   if(!o.components.empty() && extension(o.components) != "ply")
     throw Usage_error("the components picture '" + o.components + "' must end in .ply");
   if(o.solver != "gauss-newton" && o.solver != "paper-cg")
@@ -351,6 +367,52 @@ void check_writable(const std::string& path)
   std::remove(probe.c_str());
 }
 
+// Checks that the directory `path` exists and takes files, or can be created,
+// before the long computation; it is created only when the sheets are written.
+void check_directory(const std::string& path)
+{
+  if(path.empty())
+    return;
+  namespace fs = std::filesystem;
+  std::error_code error;
+  if(fs::exists(path, error))
+  {
+    if(!fs::is_directory(path, error))
+      throw Usage_error("--mold-sheets '" + path + "' is not a directory");
+    check_writable((fs::path(path) / "tile_000.svg").string());
+    return;
+  }
+  if(!fs::create_directory(path, error))
+    throw Usage_error("cannot create the directory '" + path + "' (missing parent directory or no permission)");
+  fs::remove(path, error);
+}
+
+// The text of the file `name` of the three.js files fetched when the program
+// was built (scripts/fetch_three.sh), or empty.
+std::string three_js_file(const std::string& name)
+{
+#ifdef TILABLE_SURFACES_THREE_JS_DIR
+  std::ifstream in(std::string(TILABLE_SURFACES_THREE_JS_DIR) + "/" + name, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return in ? text.str() : std::string();
+#else
+  (void)name;
+  return std::string();
+#endif
+}
+
+// The scripts the HTML report embeds; a clear error when this build has none.
+TS::IO::HTML_viewer_scripts viewer_scripts()
+{
+  TS::IO::HTML_viewer_scripts scripts{three_js_file("three.module.min.js"), three_js_file("OrbitControls.js")};
+  if(scripts.three_module.empty() || scripts.orbit_controls.empty())
+    throw Usage_error("--html is not available in this build: three.js was not fetched from the npm registry when "
+                      "k_set_tilable was built (build the target three_js with npm and the registry reachable, "
+                      "then k_set_tilable again)");
+  return scripts;
+}
+
 // --sweep: the curve file and a table on stderr.
 int write_curve(const Options& o, const std::vector<TS::Tile_count_trial>& trials, const CGAL::Real_timer& timer)
 {
@@ -377,6 +439,39 @@ std::size_t optimized_candidates(const Options& o, const Mesh& mesh)
                                      : TS::default_number_of_optimized_candidates(num_faces(mesh));
 }
 
+// The JSON report: what the library measured, and the input and parameters.
+nlohmann::json report_json(const Options& o, const TS::K_set_tilable_result& result, const Mesh& input,
+                           std::size_t optimized, bool time_limit_reached, double seconds)
+{
+  const TS::Solver_type solver =
+    o.solver == "paper-cg" ? TS::PAPER_CONJUGATE_GRADIENT : TS::CONSTRAINED_GAUSS_NEWTON;
+  nlohmann::json report = TS::IO::tilability_report_json(result);
+  report["input"] = {{"file", o.input},
+                     {"vertices", input.number_of_vertices()},
+                     {"faces", input.number_of_faces()}};
+  report["parameters"] = {{"K", o.k > 0 ? nlohmann::json(o.k) : nlohmann::json(nullptr)},
+                          {"max_deviation", o.max_deviation >= 0 ? nlohmann::json(o.max_deviation)
+                                                                 : nlohmann::json(nullptr)},
+                          {"mirror", o.mirror},
+                          {"planar", o.planar},
+                          {"distance_weight", o.distance_weight},
+                          {"fairness_weight", o.fairness_weight < 0 ? TS::default_fairness_weight(solver)
+                                                                    : o.fairness_weight},
+                          {"tangential_weight", o.tangential_weight},
+                          {"optimized_candidates", optimized},
+                          {"improvement_rounds", o.improvement_rounds},
+                          {"candidates", o.candidates},
+                          {"solver", o.solver},
+                          {"fixed_boundary", o.fixed_boundary},
+                          {"iterations", o.iterations},
+                          {"time_limit", o.time_limit >= 0 ? nlohmann::json(o.time_limit) : nlohmann::json(nullptr)},
+                          {"seed", o.seed},
+                          {"threads", o.threads}};
+  report["time_limit_reached"] = time_limit_reached;
+  report["time_seconds"]["total_with_io"] = seconds;
+  return report;
+}
+
 int run(const Options& o)
 {
 #ifdef CGAL_LINKED_WITH_TBB
@@ -384,8 +479,10 @@ int run(const Options& o)
   if(o.threads > 0)
     threads.reset(new tbb::global_control(tbb::global_control::max_allowed_parallelism, o.threads));
 #endif
-  for(const std::string& path : {o.output, o.report, o.catalog, o.components, o.curve})
+  for(const std::string& path : {o.output, o.report, o.catalog, o.components, o.curve, o.html})
     check_writable(path);
+  check_directory(o.mold_sheets);
+  const TS::IO::HTML_viewer_scripts scripts = o.html.empty() ? TS::IO::HTML_viewer_scripts() : viewer_scripts();
 
   CGAL::Real_timer timer;
   timer.start();
@@ -481,38 +578,25 @@ int run(const Options& o)
   }
   if(!o.curve.empty())
     files.add(o.curve, [&](std::ostream& out) { return TS::IO::write_tile_count_curve_CSV(out, result.trials); });
+  const nlohmann::json report = o.report.empty() && o.html.empty() ? nlohmann::json()
+    : report_json(o, result, input, optimized_candidates(o, mesh), progress.stopped, timer.time());
   if(!o.report.empty())
-  {
-    nlohmann::json report = TS::IO::tilability_report_json(result);
-    report["input"] = {{"file", o.input},
-                       {"vertices", input.number_of_vertices()},
-                       {"faces", input.number_of_faces()}};
-    report["parameters"] = {{"K", o.k > 0 ? nlohmann::json(o.k) : nlohmann::json(nullptr)},
-                            {"max_deviation", o.max_deviation >= 0 ? nlohmann::json(o.max_deviation)
-                                                                   : nlohmann::json(nullptr)},
-                            {"mirror", o.mirror},
-                            {"planar", o.planar},
-                            {"distance_weight", o.distance_weight},
-                            {"fairness_weight", o.fairness_weight < 0
-                                                  ? TS::default_fairness_weight(solver)
-                                                  : o.fairness_weight},
-                            {"tangential_weight", o.tangential_weight},
-                            {"optimized_candidates", optimized_candidates(o, mesh)},
-                            {"improvement_rounds", o.improvement_rounds},
-                            {"candidates", o.candidates},
-                            {"solver", o.solver},
-                            {"fixed_boundary", o.fixed_boundary},
-                            {"iterations", o.iterations},
-                            {"time_limit", o.time_limit >= 0 ? nlohmann::json(o.time_limit)
-                                                             : nlohmann::json(nullptr)},
-                            {"seed", o.seed},
-                            {"threads", o.threads}};
-    report["time_limit_reached"] = progress.stopped;
-    report["time_seconds"]["total_with_io"] = timer.time();
     files.add(o.report, [&](std::ostream& out) {
       out << std::setw(2) << report << "\n";
       return bool(out);
     });
+  if(!o.html.empty())
+    files.add(o.html, [&](std::ostream& out) {
+      return TS::IO::write_HTML_report(out, mesh, input, result, report, scripts,
+                                       TSP::face_cluster_map(cluster).face_orientation_map(orientation));
+    });
+  if(!o.mold_sheets.empty())
+  {
+    std::filesystem::create_directories(o.mold_sheets);
+    for(std::size_t i = 0; i < result.tiles.size(); ++i)
+      if(result.tiles[i].instance_count > 0)
+        files.add((std::filesystem::path(o.mold_sheets) / TS::IO::mold_sheet_file_name(result.tiles[i])).string(),
+                  [&](std::ostream& out) { return TS::IO::write_mold_sheet_SVG(out, result.tiles, i); });
   }
   files.commit();
   progress.phase("writing", write_timer.time());

@@ -15,8 +15,9 @@
 // report of what was measured, and the tile catalog. With --max-deviation,
 // K is the smallest whose result is tilable within D of the input; --sweep
 // writes the K / deviation curve instead of a mesh. --html writes one
-// self-contained page to open in a browser, --mold-sheets an SVG per tile. Exit codes: 0 done,
-// 2 bad input or arguments (nothing written), 1 internal failure.
+// self-contained page to open in a browser, --mold-sheets an SVG per tile.
+// Exit codes: 0 done, 2 bad input or arguments (nothing written), 1 internal
+// failure.
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
@@ -26,9 +27,9 @@
 #include <CGAL/Tilable_surfaces/IO/read_polygon_mesh.h>
 #include <CGAL/Tilable_surfaces/IO/report.h>
 #include <CGAL/Tilable_surfaces/IO/tile_catalog.h>
+#include <CGAL/Tilable_surfaces/IO/write_HTML_report.h>
 #include <CGAL/Tilable_surfaces/IO/write_OBJ.h>
 #include <CGAL/Tilable_surfaces/IO/write_PLY.h>
-#include <CGAL/Tilable_surfaces/IO/write_HTML_report.h>
 #include <CGAL/Tilable_surfaces/IO/write_edge_components_PLY.h>
 #include <CGAL/Tilable_surfaces/IO/write_tile_count_curve.h>
 #include <CGAL/Tilable_surfaces/k_set_tilable_curve.h>

@@ -123,9 +123,12 @@ async function start() {
   ghost.visible = false; scene.add(ghost);
   scene.add(panelEdges(THREE));
 
-  const sphere = geometry.boundingSphere;
+  ghostGeometry.computeBoundingSphere();
+  const sphere = geometry.boundingSphere.clone().union(ghostGeometry.boundingSphere);
   camera.up.set(0, 0, 1); camera.near = sphere.radius / 100; camera.far = sphere.radius * 100;
-  camera.position.copy(sphere.center).add(new THREE.Vector3(1, -1.6, 1.1).normalize().multiplyScalar(2.7 * sphere.radius));
+  // Far enough for the bounding sphere of both surfaces to fit the narrower field of view.
+  const fov = THREE.MathUtils.degToRad(camera.fov) * Math.min(1, box.clientWidth / box.clientHeight);
+  camera.position.copy(sphere.center).add(new THREE.Vector3(1, -1.6, 1.1).normalize().multiplyScalar(1.1 * sphere.radius / Math.sin(fov / 2)));
   const controls = new OrbitControls(camera, canvas);
   controls.target.copy(sphere.center);
   controls.update();

@@ -8,7 +8,7 @@
 //                 [--candidates N] [--solver gauss-newton|paper-cg] [--fixed-boundary]
 //                 [--iterations N] [--time-limit SECONDS] [--seed S] [--threads N] [--mirror]
 //                 [--planar] [--ascii] [--quiet] [--help]
-//   k_set_tilable INPUT --sweep KMIN:KMAX[:STEP] --curve CURVE.csv [options]
+//   k_set_tilable INPUT --sweep KMIN:KMAX[:STEP] --curve CURVE.csv [--html CURVE.html] [options]
 //
 // Reads a quad mesh (OFF, OBJ or PLY), makes it K-set tilable, and writes the
 // moved mesh (PLY with per-face cluster, orientation and colour), a JSON
@@ -132,7 +132,7 @@ Options parse(int argc, char** argv, bool& help)
   po::options_description visible(
     "Usage: k_set_tilable INPUT -k K -o OUTPUT.ply [options]\n"
     "       k_set_tilable INPUT --max-deviation D [-k KMAX] -o OUTPUT.ply [options]\n"
-    "       k_set_tilable INPUT --sweep KMIN:KMAX[:STEP] --curve CURVE.csv [options]\n"
+    "       k_set_tilable INPUT --sweep KMIN:KMAX[:STEP] --curve CURVE.csv [--html CURVE.html] [options]\n"
     "Makes the quad mesh INPUT (OFF, OBJ or PLY; triangles allowed) tilable by K distinct panel shapes.\nOptions");
   visible.add_options()
     ("help,h", "print this help and exit")
@@ -159,7 +159,7 @@ Options parse(int argc, char** argv, bool& help)
     ("html", po::value<std::string>(&o.html),
      "one self-contained HTML page to open in a browser, offline: the result in 3D by tile or by "
      "deviation with the input as a ghost (click a panel: its tile, mold, instances, deviation), the "
-     "mold sheets, the summary and parameters, the K tried")
+     "mold sheets, the summary and parameters, the K tried; with --sweep, the curve and its table")
     ("mold-sheets", po::value<std::string>(&o.mold_sheets),
      "directory (created if missing) for one SVG mold sheet per tile, tile_000.svg ...: the tile drawn "
      "in model units with a scale bar, corners t0..t3 numbered as the PLY's orientations number them, "
@@ -231,9 +231,9 @@ Options parse(int argc, char** argv, bool& help)
     if(o.curve.empty())
       throw Usage_error("--sweep needs --curve CURVE.csv");
     if(!o.output.empty() || !o.report.empty() || !o.catalog.empty() || !o.components.empty() ||
-       !o.html.empty() || !o.mold_sheets.empty())
-      throw Usage_error("--sweep writes the curve only: no -o, --report, --catalog, --components, --html or "
-                        "--mold-sheets (--max-deviation with --html draws the K it tried)");
+       !o.mold_sheets.empty())
+      throw Usage_error("--sweep writes the curve only (and --html its page): no -o, --report, --catalog, "
+                        "--components or --mold-sheets");
   }
   else
   {
@@ -246,6 +246,8 @@ Options parse(int argc, char** argv, bool& help)
   }
   if(!o.curve.empty() && extension(o.curve) != "csv")
     throw Usage_error("the curve '" + o.curve + "' must end in .csv");
+  if(!o.html.empty() && extension(o.html) != "html" && extension(o.html) != "htm")
+    throw Usage_error("the HTML report '" + o.html + "' must end in .html or .htm");
   if(!o.sweep.empty())
     return o;
   const std::string out_ext = extension(o.output);
@@ -255,8 +257,6 @@ Options parse(int argc, char** argv, bool& help)
     throw Usage_error("the catalog '" + o.catalog + "' must end in .csv or .json");
   if(!o.report.empty() && extension(o.report) != "json")
     throw Usage_error("the report '" + o.report + "' must end in .json");
-  if(!o.html.empty() && extension(o.html) != "html" && extension(o.html) != "htm")
-    throw Usage_error("the HTML report '" + o.html + "' must end in .html or .htm");
   if(!o.components.empty() && extension(o.components) != "ply")
     throw Usage_error("the components picture '" + o.components + "' must end in .ply");
   if(o.solver != "gauss-newton" && o.solver != "paper-cg")
@@ -414,11 +414,43 @@ TS::IO::HTML_viewer_scripts viewer_scripts()
   return scripts;
 }
 
-// --sweep: the curve file and a table on stderr.
-int write_curve(const Options& o, const std::vector<TS::Tile_count_trial>& trials, const CGAL::Real_timer& timer)
+// The parameters of the run, for the reports.
+nlohmann::json parameters_json(const Options& o, std::size_t optimized)
+{
+  const TS::Solver_type solver =
+    o.solver == "paper-cg" ? TS::PAPER_CONJUGATE_GRADIENT : TS::CONSTRAINED_GAUSS_NEWTON;
+  return {{"K", o.k > 0 ? nlohmann::json(o.k) : nlohmann::json(nullptr)},
+          {"max_deviation", o.max_deviation >= 0 ? nlohmann::json(o.max_deviation) : nlohmann::json(nullptr)},
+          {"sweep", o.sweep.empty() ? nlohmann::json(nullptr) : nlohmann::json(o.sweep)},
+          {"mirror", o.mirror},
+          {"planar", o.planar},
+          {"distance_weight", o.distance_weight},
+          {"fairness_weight", o.fairness_weight < 0 ? TS::default_fairness_weight(solver) : o.fairness_weight},
+          {"tangential_weight", o.tangential_weight},
+          {"optimized_candidates", optimized},
+          {"improvement_rounds", o.improvement_rounds},
+          {"candidates", o.candidates},
+          {"solver", o.solver},
+          {"fixed_boundary", o.fixed_boundary},
+          {"iterations", o.iterations},
+          {"time_limit", o.time_limit >= 0 ? nlohmann::json(o.time_limit) : nlohmann::json(nullptr)},
+          {"seed", o.seed},
+          {"threads", o.threads}};
+}
+
+// --sweep: the curve file, its HTML page if asked, and a table on stderr.
+int write_curve(const Options& o, const std::vector<TS::Tile_count_trial>& trials, std::size_t optimized,
+                const CGAL::Real_timer& timer)
 {
   Output_files files;
   files.add(o.curve, [&](std::ostream& out) { return TS::IO::write_tile_count_curve_CSV(out, trials); });
+  if(!o.html.empty())
+    files.add(o.html, [&](std::ostream& out) {
+      const nlohmann::json report = {{"input", {{"file", o.input}}},
+                                     {"parameters", parameters_json(o, optimized)},
+                                     {"tried_K", TS::IO::tile_count_trials_json(trials)}};
+      return TS::IO::write_HTML_curve_report(out, trials, report);
+    });
   files.commit();
   std::cerr << "[k_set_tilable]    K   DOF  congruence  Hausdorff  displacement  seconds\n";
   for(const TS::Tile_count_trial& t : trials)
@@ -444,30 +476,11 @@ std::size_t optimized_candidates(const Options& o, const Mesh& mesh)
 nlohmann::json report_json(const Options& o, const TS::K_set_tilable_result& result, const Mesh& input,
                            std::size_t optimized, bool time_limit_reached, double seconds)
 {
-  const TS::Solver_type solver =
-    o.solver == "paper-cg" ? TS::PAPER_CONJUGATE_GRADIENT : TS::CONSTRAINED_GAUSS_NEWTON;
   nlohmann::json report = TS::IO::tilability_report_json(result);
   report["input"] = {{"file", o.input},
                      {"vertices", input.number_of_vertices()},
                      {"faces", input.number_of_faces()}};
-  report["parameters"] = {{"K", o.k > 0 ? nlohmann::json(o.k) : nlohmann::json(nullptr)},
-                          {"max_deviation", o.max_deviation >= 0 ? nlohmann::json(o.max_deviation)
-                                                                 : nlohmann::json(nullptr)},
-                          {"mirror", o.mirror},
-                          {"planar", o.planar},
-                          {"distance_weight", o.distance_weight},
-                          {"fairness_weight", o.fairness_weight < 0 ? TS::default_fairness_weight(solver)
-                                                                    : o.fairness_weight},
-                          {"tangential_weight", o.tangential_weight},
-                          {"optimized_candidates", optimized},
-                          {"improvement_rounds", o.improvement_rounds},
-                          {"candidates", o.candidates},
-                          {"solver", o.solver},
-                          {"fixed_boundary", o.fixed_boundary},
-                          {"iterations", o.iterations},
-                          {"time_limit", o.time_limit >= 0 ? nlohmann::json(o.time_limit) : nlohmann::json(nullptr)},
-                          {"seed", o.seed},
-                          {"threads", o.threads}};
+  report["parameters"] = parameters_json(o, optimized);
   report["time_limit_reached"] = time_limit_reached;
   report["time_seconds"]["total_with_io"] = seconds;
   return report;
@@ -483,7 +496,9 @@ int run(const Options& o)
   for(const std::string& path : {o.output, o.report, o.catalog, o.components, o.curve, o.html})
     check_writable(path);
   check_directory(o.mold_sheets);
-  const TS::IO::HTML_viewer_scripts scripts = o.html.empty() ? TS::IO::HTML_viewer_scripts() : viewer_scripts();
+  // The page of a sweep has no 3D view, and so no three.js.
+  const TS::IO::HTML_viewer_scripts scripts =
+    o.html.empty() || !o.sweep.empty() ? TS::IO::HTML_viewer_scripts() : viewer_scripts();
 
   CGAL::Real_timer timer;
   timer.start();
@@ -526,7 +541,8 @@ int run(const Options& o)
               .number_of_iterations(o.iterations >= 0 ? o.iterations : TS::default_number_of_iterations(solver))
               .visitor(std::ref(progress));
   if(!o.sweep.empty())
-    return write_curve(o, TS::k_set_tilable_curve<CGAL::Parallel_if_available_tag>(mesh, o.sweep_k, np), timer);
+    return write_curve(o, TS::k_set_tilable_curve<CGAL::Parallel_if_available_tag>(mesh, o.sweep_k, np),
+                       optimized_candidates(o, mesh), timer);
   const int largest_k = o.k > 0 ? o.k : int(num_faces(mesh));
   TS::K_set_tilable_result result = o.max_deviation >= 0
     ? TS::make_k_set_tilable<CGAL::Parallel_if_available_tag>(mesh, np.max_deviation(o.max_deviation).number_of_tiles(largest_k))

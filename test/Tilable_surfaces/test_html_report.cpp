@@ -373,9 +373,60 @@ TEST(CommandLine, BadHtmlAndSheetPathsAreRefusedBeforeComputing)
     EXPECT_FALSE(fs::exists(ply)) << c.first;
   }
   std::string output;
-  EXPECT_EQ(run_program(off + " --sweep 1:2 --curve " + (dir / "c.csv").string() + " --html " +
-                          (dir / "r.html").string(), output), 2);
+  EXPECT_EQ(run_program(off + " --sweep 1:2 --curve " + (dir / "c.csv").string() + " --mold-sheets " +
+                          (dir / "sheets").string(), output), 2);
   EXPECT_FALSE(fs::exists(dir / "missing"));
+  EXPECT_FALSE(fs::exists(dir / "sheets"));
+}
+
+TEST(CommandLine, ASweepWritesThePageOfItsCurve)
+{
+  Temp_dir dir("html_cli_sweep");
+  const std::string off = (dir / "profile.off").string(), csv = (dir / "c.csv").string();
+  ASSERT_TRUE(CGAL::IO::write_OFF(off, swept_profile(3, 2)));
+  std::string output;
+  ASSERT_EQ(run_program(off + " -q --sweep 1:3 --curve " + csv + " --html " + (dir / "c.html").string(), output), 0)
+    << output;
+  std::ifstream page(dir / "c.html");
+  const std::string html((std::istreambuf_iterator<char>(page)), std::istreambuf_iterator<char>());
+  EXPECT_EQ(attributes(html, "tr class=\"trial\"", "data-k"), (std::vector<std::string>{"1", "2", "3"}));
+  EXPECT_EQ(attributes(html, "circle class=\"trial\"", "data-k").size(), 3u);
+  // The CSV the same run wrote says which K are tilable; the table says the same.
+  std::ifstream in(csv);
+  std::string line;
+  std::getline(in, line);
+  std::vector<std::string> from_csv, from_table;
+  while(std::getline(in, line))
+  {
+    std::vector<std::string> cells;
+    std::istringstream row(line);
+    for(std::string cell; std::getline(row, cell, ',');) cells.push_back(cell);
+    from_csv.push_back(cells.at(0) + (cells.at(6) == "1" ? " yes" : " no"));
+  }
+  const std::regex row("<tr class=\"trial\" data-k=\"(\\d+)\">(<td>[^<]*</td>){5}<td>(yes|no)</td>");
+  for(auto it = std::sregex_iterator(html.begin(), html.end(), row); it != std::sregex_iterator(); ++it)
+    from_table.push_back((*it)[1].str() + " " + (*it)[3].str());
+  EXPECT_EQ(from_table, from_csv);
+  EXPECT_EQ(nlohmann::json::parse(script_text(html, "report-data"))["tried_K"].size(), 3u);
+}
+
+TEST(HtmlCurveReport, OneRowAndOneDotPerKTriedInTheirOrder)
+{
+  std::vector<TS::Tile_count_trial> trials(3);
+  const std::size_t k[3] = {16, 8, 12};
+  for(std::size_t i = 0; i < 3; ++i)
+  {
+    trials[i].number_of_tiles = k[i];
+    trials[i].hausdorff_distance = 0.01 * double(i + 1);
+    trials[i].is_tilable = i != 1;
+  }
+  std::ostringstream out;
+  ASSERT_TRUE(TS::IO::write_HTML_curve_report(out, trials));
+  const std::string html = out.str();
+  EXPECT_EQ(attributes(html, "tr class=\"trial\"", "data-k"), (std::vector<std::string>{"16", "8", "12"}));
+  const std::vector<std::string> dots = attributes(html, "circle class=\"trial\"", "data-k");
+  EXPECT_EQ(dots, (std::vector<std::string>{"8", "12", "16"})) << "the plot goes by K";
+  EXPECT_EQ(html.find("three-module"), std::string::npos) << "no 3D view";
 }
 
 } // namespace test_html_report_unit

@@ -10,7 +10,8 @@
 /// a click on a panel tells its tile, mold, instances and deviation), the
 /// mold sheets (`mold_sheet.h`) with a button that shows each tile's
 /// instances on the surface, the summary and parameters of the JSON report,
-/// and the K / deviation curve of a deviation search.
+/// and the K / deviation curve of a deviation search; and the page of a
+/// curve alone (`k_set_tilable_curve()`).
 
 #include <CGAL/Tilable_surfaces/IO/cluster_colors.h>
 #include <CGAL/Tilable_surfaces/IO/mold_sheet.h>
@@ -322,17 +323,59 @@ inline std::string catalog_html(const std::vector<Tile>& tiles)
   return s + "</div>\n";
 }
 
-// The page around the sections, and the embedded data and scripts.
-inline std::string report_page(const std::string& title, const std::string& body, const nlohmann::json& report,
-                               const nlohmann::json& viewer_data, const HTML_viewer_scripts& scripts)
+// `value` as a <script> element of type `type` with id `id`.
+inline std::string script_element(const char* type, const char* id, const std::string& value)
+{
+  return std::string("<script type=\"") + type + "\" id=\"" + id + "\">" + script_safe(value) + "</script>\n";
+}
+
+// The page around the sections and the scripts after them.
+inline std::string html_page(const std::string& title, const std::string& body, const std::string& scripts)
 {
   return "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + html_escaped(title) +
          "</title>\n<style>" + Tilable_surfaces::internal::html_report_style() + "</style>\n</head>\n<body>\n" + body +
-         "<script type=\"application/json\" id=\"report-data\">" + script_safe(report.dump()) + "</script>\n" +
-         "<script type=\"application/json\" id=\"mesh-data\">" + script_safe(viewer_data.dump()) + "</script>\n" +
-         "<script type=\"text/plain\" id=\"three-module\">" + script_safe(scripts.three_module) + "</script>\n" +
-         "<script type=\"text/plain\" id=\"orbit-controls\">" + script_safe(scripts.orbit_controls) + "</script>\n" +
-         "<script type=\"module\">" + Tilable_surfaces::internal::html_report_script() + "</script>\n</body>\n</html>\n";
+         scripts + "</body>\n</html>\n";
+}
+
+// The embedded data and scripts of the report with the 3D view.
+inline std::string viewer_scripts_html(const nlohmann::json& report, const nlohmann::json& viewer_data,
+                                       const HTML_viewer_scripts& scripts)
+{
+  return script_element("application/json", "report-data", report.dump()) +
+         script_element("application/json", "mesh-data", viewer_data.dump()) +
+         script_element("text/plain", "three-module", scripts.three_module) +
+         script_element("text/plain", "orbit-controls", scripts.orbit_controls) +
+         "<script type=\"module\">" + Tilable_surfaces::internal::html_report_script() + "</script>\n";
+}
+
+// The input file the report names (`input/file`), or `otherwise`.
+inline std::string report_file(const nlohmann::json& report, const std::string& otherwise)
+{
+  const nlohmann::json::json_pointer at("/input/file");
+  return report.contains(at) && report.at(at).is_string() ? report.at(at).get<std::string>() : otherwise;
+}
+
+// The K tried as a plot and its legend.
+inline std::string curve_section(const std::vector<Tile_count_trial>& trials, double budget)
+{
+  return "<section id=\"curve\">\n<h2>K / deviation: the K tried</h2>\n" + curve_svg(trials, budget) +
+         "<p>Filled: tilable and not crossing itself; dashed: the deviation budget. A dot's tooltip gives its K "
+         "and distance.</p>\n</section>\n";
+}
+
+// The K tried as a table, in the order tried.
+inline std::string trials_table_html(const std::vector<Tile_count_trial>& trials)
+{
+  std::string s = "<table id=\"trials\">\n<tr><th>K</th><th>DOF</th><th>congruence error</th><th>Hausdorff, % of the "
+                  "diagonal</th><th>largest displacement</th><th>tilable</th><th>crossing pairs</th><th>refined from K"
+                  "</th><th>seconds</th></tr>\n";
+  for(const Tile_count_trial& t : trials)
+    s += "<tr class=\"trial\" data-k=\"" + std::to_string(t.number_of_tiles) + "\"><td>" + std::to_string(t.number_of_tiles) +
+         "</td><td>" + std::to_string(t.degree_of_flexibility) + "</td><td>" + number(t.congruence_error, 3) + "</td><td>" +
+         number(100 * t.hausdorff_distance, 4) + "</td><td>" + number(t.max_displacement, 4) + "</td><td>" +
+         (t.is_tilable ? "yes" : "no") + "</td><td>" + std::to_string(t.self_intersecting_face_pairs) + "</td><td>" +
+         (t.refined_from > 0 ? std::to_string(t.refined_from) : "") + "</td><td>" + number(t.seconds, 3) + "</td></tr>\n";
+  return s + "</table>\n";
 }
 
 // The 3D view and its controls.
@@ -381,8 +424,7 @@ bool write_HTML_report(std::ostream& os, const PolygonMesh& pm, const PolygonMes
   const Tilability_measure& m = r.optimization.measure;
   const nlohmann::json::json_pointer budget_at("/parameters/max_deviation");
   const double budget = report.contains(budget_at) && report.at(budget_at).is_number() ? report.at(budget_at).get<double>() : 0;
-  const std::string file = report.contains("/input/file"_json_pointer) && report.at("/input/file"_json_pointer).is_string()
-                             ? report.at("/input/file"_json_pointer).get<std::string>() : std::string("the result");
+  const std::string file = internal::report_file(report, "the result");
   std::string body = "<header>\n<h1>" + internal::html_escaped(std::filesystem::path(file).filename().string()) + ": " + std::to_string(m.number_of_clusters) +
                      "-set tilable, " + std::to_string(m.number_of_distinct_molds) + " distinct molds</h1>\n<p>" +
                      std::to_string(mesh.face_sizes.size()) + " panels. <a href=\"#summary\">Summary</a> &middot; " +
@@ -390,13 +432,33 @@ bool write_HTML_report(std::ostream& os, const PolygonMesh& pm, const PolygonMes
                      "<a href=\"#catalog\">Molds</a></p>\n</header>\n" + internal::viewer_html();
   body += "<section id=\"summary\">\n<h2>Summary</h2>\n" + internal::summary_html(report) + "</section>\n";
   if(!r.trials.empty())
-    body += "<section id=\"curve\">\n<h2>K / deviation: the K tried</h2>\n" + internal::curve_svg(r.trials, budget) +
-            "<p>Filled: tilable and not crossing itself; dashed: the deviation budget. A dot's tooltip gives its K "
-            "and distance.</p>\n</section>\n";
+    body += internal::curve_section(r.trials, budget);
   body += "<section id=\"catalog\">\n<h2>Molds: " + std::to_string(m.number_of_clusters) + " tiles</h2>\n" +
           internal::catalog_html(r.tiles) + "</section>\n";
-  os << internal::report_page(file + ", K = " + std::to_string(m.number_of_clusters), body, report,
-                              internal::viewer_data_json(mesh, m.input_bbox_diagonal), scripts);
+  os << internal::html_page(file + ", K = " + std::to_string(m.number_of_clusters), body,
+                            internal::viewer_scripts_html(report, internal::viewer_data_json(mesh, m.input_bbox_diagonal),
+                                                          scripts));
+  return bool(os);
+}
+
+/// \ingroup PkgTilableSurfacesRef
+/// Writes the HTML page of a K / deviation curve (`k_set_tilable_curve()`,
+/// or the K tried by a deviation search): the plot, the table of every K
+/// tried in the given order, and `report` embedded (`id="report-data"`; its
+/// `input/file`, if any, names the page). Self-contained, without a 3D view
+/// and so without three.js. The same arguments give the same bytes.
+/// \returns whether the stream is good after writing.
+inline bool write_HTML_curve_report(std::ostream& os, const std::vector<Tile_count_trial>& trials,
+                                    const nlohmann::json& report = nlohmann::json::object())
+{
+  const std::string file = internal::report_file(report, "the surface");
+  std::string body = "<header>\n<h1>" + internal::html_escaped(std::filesystem::path(file).filename().string()) +
+                     ": " + std::to_string(trials.size()) + " K tried</h1>\n</header>\n";
+  if(!trials.empty())
+    body += internal::curve_section(trials, 0) + "<section id=\"trials-section\">\n<h2>Every K tried</h2>\n" +
+            internal::trials_table_html(trials) + "</section>\n";
+  os << internal::html_page(file + ": K / deviation", body,
+                            internal::script_element("application/json", "report-data", report.dump()));
   return bool(os);
 }
 

@@ -21,3 +21,7 @@ done
   --components "$tmp/seashell_k60_edges.ply" --quiet 2>/dev/null
 bash scripts/render.sh "$tmp/seashell_k60.ply" "$fig/seashell_k60.png"
 bash scripts/render.sh "$tmp/seashell_k60_edges.ply" "$fig/seashell_k60_edges.png"
+# The demo's HTML report in headless chromium, a panel clicked (as the browser test opens it).
+bash test/Tilable_surfaces/html_report_browser_test.sh build/bin/k_set_tilable "$data/seashell.off" 60 \
+  "$tmp/browser" "$fig/seashell_html_report.png" ||
+  echo "figures: no picture of the HTML report (it needs chromium and npm)"

@@ -2,27 +2,32 @@
 //
 //   k_set_tilable INPUT (-k K | --max-deviation D [-k KMAX]) -o OUTPUT.ply
 //                 [--report REPORT.json] [--catalog TILES.csv|TILES.json] [--curve CURVE.csv]
-//                 [--components EDGES.ply] [--distance-weight W] [--fairness-weight W]
+//                 [--components EDGES.ply] [--html REPORT.html] [--mold-sheets DIR]
+//                 [--distance-weight W] [--fairness-weight W]
 //                 [--tangential-weight W] [--optimized-candidates N] [--improvement-rounds N]
 //                 [--candidates N] [--solver gauss-newton|paper-cg] [--fixed-boundary]
 //                 [--iterations N] [--time-limit SECONDS] [--seed S] [--threads N] [--mirror]
 //                 [--planar] [--ascii] [--quiet] [--help]
-//   k_set_tilable INPUT --sweep KMIN:KMAX[:STEP] --curve CURVE.csv [options]
+//   k_set_tilable INPUT --sweep KMIN:KMAX[:STEP] --curve CURVE.csv [--html CURVE.html] [options]
 //
 // Reads a quad mesh (OFF, OBJ or PLY), makes it K-set tilable, and writes the
 // moved mesh (PLY with per-face cluster, orientation and colour), a JSON
 // report of what was measured, and the tile catalog. With --max-deviation,
 // K is the smallest whose result is tilable within D of the input; --sweep
-// writes the K / deviation curve instead of a mesh. Exit codes: 0 done,
-// 2 bad input or arguments (nothing written), 1 internal failure.
+// writes the K / deviation curve instead of a mesh. --html writes one
+// self-contained page to open in a browser, --mold-sheets an SVG per tile.
+// Exit codes: 0 done, 2 bad input or arguments (nothing written), 1 internal
+// failure.
 
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/boost/graph/IO/polygon_mesh_io.h>
 
+#include <CGAL/Tilable_surfaces/IO/mold_sheet.h>
 #include <CGAL/Tilable_surfaces/IO/read_polygon_mesh.h>
 #include <CGAL/Tilable_surfaces/IO/report.h>
 #include <CGAL/Tilable_surfaces/IO/tile_catalog.h>
+#include <CGAL/Tilable_surfaces/IO/write_HTML_report.h>
 #include <CGAL/Tilable_surfaces/IO/write_OBJ.h>
 #include <CGAL/Tilable_surfaces/IO/write_PLY.h>
 #include <CGAL/Tilable_surfaces/IO/write_edge_components_PLY.h>
@@ -64,7 +69,7 @@ struct Usage_error : std::runtime_error
 
 struct Options
 {
-  std::string input, output, report, catalog, components, sweep, curve;
+  std::string input, output, report, catalog, components, sweep, curve, html, mold_sheets;
   int k = 0;
   double max_deviation = -1; // negative: K is given
   std::vector<std::size_t> sweep_k;
@@ -127,7 +132,7 @@ Options parse(int argc, char** argv, bool& help)
   po::options_description visible(
     "Usage: k_set_tilable INPUT -k K -o OUTPUT.ply [options]\n"
     "       k_set_tilable INPUT --max-deviation D [-k KMAX] -o OUTPUT.ply [options]\n"
-    "       k_set_tilable INPUT --sweep KMIN:KMAX[:STEP] --curve CURVE.csv [options]\n"
+    "       k_set_tilable INPUT --sweep KMIN:KMAX[:STEP] --curve CURVE.csv [--html CURVE.html] [options]\n"
     "Makes the quad mesh INPUT (OFF, OBJ or PLY; triangles allowed) tilable by K distinct panel shapes.\nOptions");
   visible.add_options()
     ("help,h", "print this help and exit")
@@ -151,6 +156,14 @@ Options parse(int argc, char** argv, bool& help)
     ("catalog", po::value<std::string>(&o.catalog), "tile catalog, .csv or .json")
     ("components", po::value<std::string>(&o.components),
      "PLY picture of the edge-sharing components (paper Fig. 6)")
+    ("html", po::value<std::string>(&o.html),
+     "one self-contained HTML page to open in a browser, offline: the result in 3D by tile or by "
+     "deviation with the input as a ghost (click a panel: its tile, mold, instances, deviation), the "
+     "mold sheets, the summary and parameters, the K tried; with --sweep, the curve and its table")
+    ("mold-sheets", po::value<std::string>(&o.mold_sheets),
+     "directory (created if missing) for one SVG mold sheet per tile, tile_000.svg ...: the tile drawn "
+     "in model units with a scale bar, corners t0..t3 numbered as the PLY's orientations number them, "
+     "edge and diagonal lengths, corner angles, twist, instances")
     ("distance-weight", po::value<double>(&o.distance_weight)->default_value(o.distance_weight),
      "mu1, closeness to the input")
     ("fairness-weight", po::value<double>(&o.fairness_weight),
@@ -217,8 +230,10 @@ Options parse(int argc, char** argv, bool& help)
       throw Usage_error("--sweep runs its own K: give neither -k nor --max-deviation");
     if(o.curve.empty())
       throw Usage_error("--sweep needs --curve CURVE.csv");
-    if(!o.output.empty() || !o.report.empty() || !o.catalog.empty() || !o.components.empty())
-      throw Usage_error("--sweep writes the curve only: no -o, --report, --catalog or --components");
+    if(!o.output.empty() || !o.report.empty() || !o.catalog.empty() || !o.components.empty() ||
+       !o.mold_sheets.empty())
+      throw Usage_error("--sweep writes the curve only (and --html its page): no -o, --report, --catalog, "
+                        "--components or --mold-sheets");
   }
   else
   {
@@ -231,6 +246,8 @@ Options parse(int argc, char** argv, bool& help)
   }
   if(!o.curve.empty() && extension(o.curve) != "csv")
     throw Usage_error("the curve '" + o.curve + "' must end in .csv");
+  if(!o.html.empty() && extension(o.html) != "html" && extension(o.html) != "htm")
+    throw Usage_error("the HTML report '" + o.html + "' must end in .html or .htm");
   if(!o.sweep.empty())
     return o;
   const std::string out_ext = extension(o.output);
@@ -351,11 +368,89 @@ void check_writable(const std::string& path)
   std::remove(probe.c_str());
 }
 
-// --sweep: the curve file and a table on stderr.
-int write_curve(const Options& o, const std::vector<TS::Tile_count_trial>& trials, const CGAL::Real_timer& timer)
+// Checks that the directory `path` exists and takes files, or can be created,
+// before the long computation; it is created only when the sheets are written.
+void check_directory(const std::string& path)
+{
+  if(path.empty())
+    return;
+  namespace fs = std::filesystem;
+  std::error_code error;
+  if(fs::exists(path, error))
+  {
+    if(!fs::is_directory(path, error))
+      throw Usage_error("--mold-sheets '" + path + "' is not a directory");
+    check_writable((fs::path(path) / "tile_000.svg").string());
+    return;
+  }
+  if(!fs::create_directory(path, error))
+    throw Usage_error("cannot create the directory '" + path + "' (missing parent directory or no permission)");
+  fs::remove(path, error);
+}
+
+// The text of the file `name` of the three.js files fetched when the program
+// was built (scripts/fetch_three.sh), or empty.
+std::string three_js_file(const std::string& name)
+{
+#ifdef TILABLE_SURFACES_THREE_JS_DIR
+  std::ifstream in(std::string(TILABLE_SURFACES_THREE_JS_DIR) + "/" + name, std::ios::binary);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return in ? text.str() : std::string();
+#else
+  (void)name;
+  return std::string();
+#endif
+}
+
+// The scripts the HTML report embeds; a clear error when this build has none.
+TS::IO::HTML_viewer_scripts viewer_scripts()
+{
+  TS::IO::HTML_viewer_scripts scripts{three_js_file("three.module.min.js"), three_js_file("OrbitControls.js")};
+  if(scripts.three_module.empty() || scripts.orbit_controls.empty())
+    throw Usage_error("--html is not available in this build: three.js was not fetched from the npm registry when "
+                      "k_set_tilable was built (build the target three_js with npm and the registry reachable, "
+                      "then k_set_tilable again)");
+  return scripts;
+}
+
+// The parameters of the run, for the reports.
+nlohmann::json parameters_json(const Options& o, std::size_t optimized)
+{
+  const TS::Solver_type solver =
+    o.solver == "paper-cg" ? TS::PAPER_CONJUGATE_GRADIENT : TS::CONSTRAINED_GAUSS_NEWTON;
+  return {{"K", o.k > 0 ? nlohmann::json(o.k) : nlohmann::json(nullptr)},
+          {"max_deviation", o.max_deviation >= 0 ? nlohmann::json(o.max_deviation) : nlohmann::json(nullptr)},
+          {"sweep", o.sweep.empty() ? nlohmann::json(nullptr) : nlohmann::json(o.sweep)},
+          {"mirror", o.mirror},
+          {"planar", o.planar},
+          {"distance_weight", o.distance_weight},
+          {"fairness_weight", o.fairness_weight < 0 ? TS::default_fairness_weight(solver) : o.fairness_weight},
+          {"tangential_weight", o.tangential_weight},
+          {"optimized_candidates", optimized},
+          {"improvement_rounds", o.improvement_rounds},
+          {"candidates", o.candidates},
+          {"solver", o.solver},
+          {"fixed_boundary", o.fixed_boundary},
+          {"iterations", o.iterations},
+          {"time_limit", o.time_limit >= 0 ? nlohmann::json(o.time_limit) : nlohmann::json(nullptr)},
+          {"seed", o.seed},
+          {"threads", o.threads}};
+}
+
+// --sweep: the curve file, its HTML page if asked, and a table on stderr.
+int write_curve(const Options& o, const std::vector<TS::Tile_count_trial>& trials, std::size_t optimized,
+                const CGAL::Real_timer& timer)
 {
   Output_files files;
   files.add(o.curve, [&](std::ostream& out) { return TS::IO::write_tile_count_curve_CSV(out, trials); });
+  if(!o.html.empty())
+    files.add(o.html, [&](std::ostream& out) {
+      const nlohmann::json report = {{"input", {{"file", o.input}}},
+                                     {"parameters", parameters_json(o, optimized)},
+                                     {"tried_K", TS::IO::tile_count_trials_json(trials)}};
+      return TS::IO::write_HTML_curve_report(out, trials, report);
+    });
   files.commit();
   std::cerr << "[k_set_tilable]    K   DOF  congruence  Hausdorff  displacement  seconds\n";
   for(const TS::Tile_count_trial& t : trials)
@@ -377,6 +472,20 @@ std::size_t optimized_candidates(const Options& o, const Mesh& mesh)
                                      : TS::default_number_of_optimized_candidates(num_faces(mesh));
 }
 
+// The JSON report: what the library measured, and the input and parameters.
+nlohmann::json report_json(const Options& o, const TS::K_set_tilable_result& result, const Mesh& input,
+                           std::size_t optimized, bool time_limit_reached, double seconds)
+{
+  nlohmann::json report = TS::IO::tilability_report_json(result);
+  report["input"] = {{"file", o.input},
+                     {"vertices", input.number_of_vertices()},
+                     {"faces", input.number_of_faces()}};
+  report["parameters"] = parameters_json(o, optimized);
+  report["time_limit_reached"] = time_limit_reached;
+  report["time_seconds"]["total_with_io"] = seconds;
+  return report;
+}
+
 int run(const Options& o)
 {
 #ifdef CGAL_LINKED_WITH_TBB
@@ -384,8 +493,12 @@ int run(const Options& o)
   if(o.threads > 0)
     threads.reset(new tbb::global_control(tbb::global_control::max_allowed_parallelism, o.threads));
 #endif
-  for(const std::string& path : {o.output, o.report, o.catalog, o.components, o.curve})
+  for(const std::string& path : {o.output, o.report, o.catalog, o.components, o.curve, o.html})
     check_writable(path);
+  check_directory(o.mold_sheets);
+  // The page of a sweep has no 3D view, and so no three.js.
+  const TS::IO::HTML_viewer_scripts scripts =
+    o.html.empty() || !o.sweep.empty() ? TS::IO::HTML_viewer_scripts() : viewer_scripts();
 
   CGAL::Real_timer timer;
   timer.start();
@@ -428,7 +541,8 @@ int run(const Options& o)
               .number_of_iterations(o.iterations >= 0 ? o.iterations : TS::default_number_of_iterations(solver))
               .visitor(std::ref(progress));
   if(!o.sweep.empty())
-    return write_curve(o, TS::k_set_tilable_curve<CGAL::Parallel_if_available_tag>(mesh, o.sweep_k, np), timer);
+    return write_curve(o, TS::k_set_tilable_curve<CGAL::Parallel_if_available_tag>(mesh, o.sweep_k, np),
+                       optimized_candidates(o, mesh), timer);
   const int largest_k = o.k > 0 ? o.k : int(num_faces(mesh));
   TS::K_set_tilable_result result = o.max_deviation >= 0
     ? TS::make_k_set_tilable<CGAL::Parallel_if_available_tag>(mesh, np.max_deviation(o.max_deviation).number_of_tiles(largest_k))
@@ -481,38 +595,25 @@ int run(const Options& o)
   }
   if(!o.curve.empty())
     files.add(o.curve, [&](std::ostream& out) { return TS::IO::write_tile_count_curve_CSV(out, result.trials); });
+  const nlohmann::json report = o.report.empty() && o.html.empty() ? nlohmann::json()
+    : report_json(o, result, input, optimized_candidates(o, mesh), progress.stopped, timer.time());
   if(!o.report.empty())
-  {
-    nlohmann::json report = TS::IO::tilability_report_json(result);
-    report["input"] = {{"file", o.input},
-                       {"vertices", input.number_of_vertices()},
-                       {"faces", input.number_of_faces()}};
-    report["parameters"] = {{"K", o.k > 0 ? nlohmann::json(o.k) : nlohmann::json(nullptr)},
-                            {"max_deviation", o.max_deviation >= 0 ? nlohmann::json(o.max_deviation)
-                                                                   : nlohmann::json(nullptr)},
-                            {"mirror", o.mirror},
-                            {"planar", o.planar},
-                            {"distance_weight", o.distance_weight},
-                            {"fairness_weight", o.fairness_weight < 0
-                                                  ? TS::default_fairness_weight(solver)
-                                                  : o.fairness_weight},
-                            {"tangential_weight", o.tangential_weight},
-                            {"optimized_candidates", optimized_candidates(o, mesh)},
-                            {"improvement_rounds", o.improvement_rounds},
-                            {"candidates", o.candidates},
-                            {"solver", o.solver},
-                            {"fixed_boundary", o.fixed_boundary},
-                            {"iterations", o.iterations},
-                            {"time_limit", o.time_limit >= 0 ? nlohmann::json(o.time_limit)
-                                                             : nlohmann::json(nullptr)},
-                            {"seed", o.seed},
-                            {"threads", o.threads}};
-    report["time_limit_reached"] = progress.stopped;
-    report["time_seconds"]["total_with_io"] = timer.time();
     files.add(o.report, [&](std::ostream& out) {
       out << std::setw(2) << report << "\n";
       return bool(out);
     });
+  if(!o.html.empty())
+    files.add(o.html, [&](std::ostream& out) {
+      return TS::IO::write_HTML_report(out, mesh, input, result, report, scripts,
+                                       TSP::face_cluster_map(cluster).face_orientation_map(orientation));
+    });
+  if(!o.mold_sheets.empty())
+  {
+    std::filesystem::create_directories(o.mold_sheets);
+    for(std::size_t i = 0; i < result.tiles.size(); ++i)
+      if(result.tiles[i].instance_count > 0)
+        files.add((std::filesystem::path(o.mold_sheets) / TS::IO::mold_sheet_file_name(result.tiles[i])).string(),
+                  [&](std::ostream& out) { return TS::IO::write_mold_sheet_SVG(out, result.tiles, i); });
   }
   files.commit();
   progress.phase("writing", write_timer.time());

@@ -614,28 +614,46 @@ inline bool split_columns_to(std::vector<std::size_t>& label, const Quad_grid& g
   return true;
 }
 
+// The sweep of the rings a..b of a full grid (`run_of`: the run of each of
+// its rows, numbered from 0 at row a; one run when empty), as swept_section()
+// gives it for those rings alone.
+inline Swept_section group_swept_section(const std::vector<Eigen::Matrix3Xd>& ring,
+                                         const std::vector<Eigen::ArrayXd>& present,
+                                         const std::vector<std::size_t>& run_of, std::size_t a, std::size_t b)
+{
+  const std::vector<Eigen::Matrix3Xd> group_ring(ring.begin() + a, ring.begin() + b + 1);
+  const std::vector<Eigen::ArrayXd> group_present(present.begin() + a, present.begin() + b + 1);
+  return swept_section(group_ring, run_of.empty() ? std::vector<std::size_t>(b - a, 0) : run_of, false, group_present);
+}
+
 // How far the one-run sweep of the rings a..b of a full grid lies from them:
 // the largest distance of a swept point from its ring point.
 inline double sweep_group_deviation(const std::vector<Eigen::Matrix3Xd>& ring,
                                     const std::vector<Eigen::ArrayXd>& present, std::size_t a, std::size_t b)
 {
-  const std::vector<Eigen::Matrix3Xd> group_ring(ring.begin() + a, ring.begin() + b + 1);
-  const std::vector<Eigen::ArrayXd> group_present(present.begin() + a, present.begin() + b + 1);
-  const Swept_section swept = swept_section(group_ring, std::vector<std::size_t>(b - a, 0), false, group_present);
+  const Swept_section swept = group_swept_section(ring, present, {}, a, b);
   if(!swept.valid)
     return std::numeric_limits<double>::infinity();
   double deviation = 0;
-  for(std::size_t i = 0; i < group_ring.size(); ++i)
-    deviation = (std::max)(deviation, (apply_motion(swept.frame[i], swept.section) - group_ring[i]).colwise().norm().maxCoeff());
+  for(std::size_t i = a; i <= b; ++i)
+    deviation = (std::max)(deviation, (apply_motion(swept.frame[i - a], swept.section) - ring[i]).colwise().norm().maxCoeff());
   return deviation;
 }
+
+// Rows [first, end) of a group of sweep rows, and how far its one-run sweep
+// lies from its rings (sweep_group_deviation()).
+struct Sweep_group
+{
+  std::size_t first, end;
+  double deviation;
+};
 
 // The rows [first, end) of `groups` one-run sweeps of a full grid's `ring`,
 // separated by single transition rows, whose largest deviation from the
 // rings (sweep_group_deviation()) is least: a dynamic program over
 // transition rows taken every rows / tuning::transition_row_choices rows.
 // Empty when the rows are too few for groups of two rows or more.
-inline std::vector<std::pair<std::size_t, std::size_t> >
+inline std::vector<Sweep_group>
 transition_groups(const std::vector<Eigen::Matrix3Xd>& ring, const std::vector<Eigen::ArrayXd>& present,
                   std::size_t groups)
 {
@@ -663,11 +681,11 @@ transition_groups(const std::vector<Eigen::Matrix3Xd>& ring, const std::vector<E
           best[g][j] = (std::max)(best[g - 1][i], cost[i][j]);
           from[g][j] = i;
         }
-  std::vector<std::pair<std::size_t, std::size_t> > result;
+  std::vector<Sweep_group> result;
   if(best[groups][m + 1] == infinity)
     return result;
   for(std::size_t g = groups, j = m + 1; g > 0; j = from[g--][j])
-    result.emplace_back(first_row(from[g][j]), end_row(j));
+    result.push_back(Sweep_group{first_row(from[g][j]), end_row(j), cost[from[g][j]][j]});
   std::reverse(result.begin(), result.end());
   return result;
 }
@@ -722,7 +740,7 @@ inline std::vector<std::size_t> transition_sweep(const Quad_grid& grid, std::siz
   const std::size_t groups = (slots + 1) / 2;
   if(ring.empty() || groups < 2)
     return {};
-  const std::vector<std::pair<std::size_t, std::size_t> > group = transition_groups(ring, present, groups);
+  const std::vector<Sweep_group> group = transition_groups(ring, present, groups);
   if(group.empty())
     return {};
   // The run of every row; a transition row is a run of its own.
@@ -730,14 +748,11 @@ inline std::vector<std::size_t> transition_sweep(const Quad_grid& grid, std::siz
   std::size_t farthest = 0;
   double deviation = -1;
   for(std::size_t g = 0; g < group.size(); ++g)
-  {
-    const double d = sweep_group_deviation(ring, present, group[g].first, group[g].second);
-    if(d > deviation && group[g].second - group[g].first >= 4)
+    if(group[g].deviation > deviation && group[g].end - group[g].first >= 4)
     {
-      deviation = d;
+      deviation = group[g].deviation;
       farthest = g;
     }
-  }
   const bool split_one = 2 * groups == slots;
   if(split_one && deviation < 0)
     return {};
@@ -745,11 +760,11 @@ inline std::vector<std::size_t> transition_sweep(const Quad_grid& grid, std::siz
   for(std::size_t r = 0, g = 0; r < grid.rows; ++r)
   {
     const bool in_group = g < group.size() && r >= group[g].first;
-    const bool split = split_one && g == farthest && r == (group[g].first + group[g].second) / 2;
+    const bool split = split_one && g == farthest && r == (group[g].first + group[g].end) / 2;
     if(r > 0 && (!in_group || r == group[g].first || split))
       ++runs;
     run_of[r] = runs;
-    if(in_group && r + 1 == group[g].second)
+    if(in_group && r + 1 == group[g].end)
       ++g;
   }
   std::vector<std::size_t> label(grid.corners.size());

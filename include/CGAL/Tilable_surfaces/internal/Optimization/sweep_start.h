@@ -104,15 +104,15 @@ inline Sweep_layout sweep_layout(const Quad_grid& grid, const std::vector<std::s
   return column_runs ? Sweep_layout::COLUMN_RUNS : Sweep_layout::NONE;
 }
 
-// The input positions `points` with the points present of the rings moved to
-// the swept `surface` (rings side by side), rigidly aligned with the input
+// Moves the points present of the rings in `points` (by vertex index) to the
+// swept `surface` (rings side by side), rigidly aligned with the input
 // (Umeyama, no scale). `ring`: the input rings, `rings`: their vertex
 // indices, `present`: per ring, 1 or 0 per point. A closed grid's last ring
 // is its first, and is not placed twice.
-inline Point_matrix placed_sweep(const Point_matrix& points, const Eigen::Matrix3Xd& surface,
-                                 const std::vector<Eigen::Matrix3Xd>& ring,
-                                 const std::vector<std::vector<std::size_t> >& rings,
-                                 const std::vector<Eigen::ArrayXd>& present, bool closed)
+inline void place_sweep(Point_matrix& points, const Eigen::Matrix3Xd& surface,
+                        const std::vector<Eigen::Matrix3Xd>& ring,
+                        const std::vector<std::vector<std::size_t> >& rings,
+                        const std::vector<Eigen::ArrayXd>& present, bool closed)
 {
   const std::size_t rows = ring.size() - 1;
   const Eigen::Index width = Eigen::Index(rings[0].size());
@@ -130,10 +130,8 @@ inline Point_matrix placed_sweep(const Point_matrix& points, const Eigen::Matrix
   const Eigen::Index count = Eigen::Index(vertex_of.size());
   const Eigen::Matrix3Xd aligned =
     apply_motion(Eigen::umeyama(swept_points.leftCols(count), input.leftCols(count), false), swept_points.leftCols(count));
-  Point_matrix start = points;
   for(Eigen::Index p = 0; p < count; ++p)
-    start.row(Eigen::Index(vertex_of[std::size_t(p)])) = aligned.col(p).transpose();
-  return start;
+    points.row(Eigen::Index(vertex_of[std::size_t(p)])) = aligned.col(p).transpose();
 }
 
 // The rows [first, end) of the groups of runs of `run_of` that share one
@@ -161,7 +159,7 @@ inline std::vector<std::pair<std::size_t, std::size_t> > section_groups(const st
 // transition rows (section_groups()): every group swept from its own
 // section and rigidly aligned with its input rings; the rings of a group
 // start where the rows between two groups are all transitions stay as
-// input. Arguments as placed_sweep() takes them.
+// input. Arguments as place_sweep() takes them.
 inline Point_matrix grouped_sweep_start(const Point_matrix& points, const std::vector<Eigen::Matrix3Xd>& ring,
                                         const std::vector<std::vector<std::size_t> >& rings,
                                         const std::vector<Eigen::ArrayXd>& present,
@@ -171,16 +169,15 @@ inline Point_matrix grouped_sweep_start(const Point_matrix& points, const std::v
   for(const std::pair<std::size_t, std::size_t>& group : section_groups(run_of))
   {
     const std::size_t a = group.first, b = group.second;
-    const std::vector<Eigen::Matrix3Xd> group_ring(ring.begin() + a, ring.begin() + b + 1);
-    const std::vector<std::vector<std::size_t> > group_rings(rings.begin() + a, rings.begin() + b + 1);
-    const std::vector<Eigen::ArrayXd> group_present(present.begin() + a, present.begin() + b + 1);
     std::vector<std::size_t> group_run_of(run_of.begin() + a, run_of.begin() + b);
     for(std::size_t& run : group_run_of)
       run -= run_of[a];
-    const Swept_section swept = swept_section(group_ring, group_run_of, false, group_present);
+    const Swept_section swept = group_swept_section(ring, present, group_run_of, a, b);
     if(!swept.valid)
       return Point_matrix();
-    start = placed_sweep(start, swept.swept(), group_ring, group_rings, group_present, false);
+    place_sweep(start, swept.swept(), std::vector<Eigen::Matrix3Xd>(ring.begin() + a, ring.begin() + b + 1),
+                std::vector<std::vector<std::size_t> >(rings.begin() + a, rings.begin() + b + 1),
+                std::vector<Eigen::ArrayXd>(present.begin() + a, present.begin() + b + 1), false);
   }
   return start;
 }
@@ -225,7 +222,9 @@ Point_matrix grid_sweep_start(const PolygonMesh& pm, VertexIndexMap vim,
   Swept_section swept = swept_section(ring, run_of, column_runs, present, closed);
   if(!swept.valid || (column_runs && !fit_screw_column_runs(swept.section, swept.motion[0], run_of_column)))
     return Point_matrix();
-  return placed_sweep(points, swept.swept(), ring, rings, present, closed);
+  Point_matrix start = points;
+  place_sweep(start, swept.swept(), ring, rings, present, closed);
+  return start;
 }
 
 // Positions, by vertex index, at which the clustering `label` (by face

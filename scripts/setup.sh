@@ -16,8 +16,9 @@ cd "$(dirname "$0")/.."
 # parallel loops (TBB), the CHOLMOD sparse solver (1.5x faster on OpenBLAS), ccache.
 cli_packages=(g++ cmake make libcgal-dev libeigen3-dev libboost-dev libboost-program-options-dev
               nlohmann-json3-dev libtbb-dev libsuitesparse-dev libopenblas0-pthread ccache)
-# On top, for the testsuite and the Python module tilable_surfaces (build/python/).
-test_packages=(libgtest-dev pybind11-dev python3-dev python3-numpy)
+# On top, for the testsuite and the Python module tilable_surfaces (build/python/);
+# chromium for the test of the HTML report in a browser (label browser).
+test_packages=(libgtest-dev pybind11-dev python3-dev python3-numpy chromium)
 # scripts/fuzz.sh installs clang and libclang-rt-dev (libFuzzer) on top, when it is run.
 
 mode=all

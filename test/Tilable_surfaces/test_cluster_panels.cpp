@@ -399,16 +399,24 @@ TEST(ClusterQuads, TowerSymmetricQuadsShareClusters)
     Eigen::AngleAxisd(2 * M_PI / 24, Eigen::Vector3d::UnitZ()).toRotationMatrix());
 }
 
-// The exact weight of the labelling in the maps: sum of pairwise dissimilarities.
-double exact_weight(const Mesh& m, const Maps& mp)
+// The exact weight of a labelling (by face index): sum of pairwise dissimilarities.
+double labelling_weight(const Mesh& m, const std::vector<std::size_t>& label)
 {
   std::vector<Face> f(faces(m).begin(), faces(m).end());
   double w = 0;
   for(std::size_t i = 0; i < f.size(); ++i)
     for(std::size_t j = i + 1; j < f.size(); ++j)
-      if(mp.cluster[f[i]] == mp.cluster[f[j]])
+      if(label[std::size_t(f[i])] == label[std::size_t(f[j])])
         w += TS::internal::fast_best_match(TS::face_panel(f[i], m), TS::face_panel(f[j], m)).dissimilarity;
   return w;
+}
+
+// The same, of the labelling in the maps.
+double exact_weight(const Mesh& m, const Maps& mp)
+{
+  std::vector<std::size_t> label(m.number_of_faces());
+  for(Face f : faces(m)) label[std::size_t(f)] = mp.cluster[f];
+  return labelling_weight(m, label);
 }
 
 TEST(ClusterQuads, DescriptorPathAgreesWithExactPath)
@@ -607,6 +615,133 @@ TEST(TwistSeparation, ClustersByRowsBecomeTheTwoHalves)
   std::vector<std::size_t> halves(16);
   for(std::size_t f = 0; f < 16; ++f) halves[f] = f % 8 < 4 ? 0 : 1;
   EXPECT_TRUE(TS::internal::Twist_separation(quads, TS::PROPER_RIGID_MOTIONS)(halves, 2).empty());
+}
+
+namespace {
+
+// cluster_panels() of the monkey saddle (100 quads) at K = 6, with the
+// parameters `np` besides the maps.
+template <typename NP>
+TS::Clustering_result saddle_clustering(Mesh& m, const NP& np)
+{
+  Maps mp = maps(m);
+  return TS::cluster_panels(m, np.face_cluster_map(mp.cluster).face_orientation_map(mp.orientation));
+}
+
+auto at_six() { return TS::parameters::number_of_tiles(6); }
+
+// The number of candidates of the pool from `origin`.
+std::size_t from_origin(const TS::Clustering_result& r, TS::Clustering_candidate::Origin origin)
+{
+  return std::size_t(std::count_if(r.candidates.begin(), r.candidates.end(),
+                                   [&](const TS::Clustering_candidate& c) { return c.origin == origin; }));
+}
+
+} // namespace
+
+// number_of_candidates is the width of the beam, whose last configurations
+// are the hierarchical candidates; the switches leave out the k-means and
+// the quad-strip candidates.
+TEST(ClusterQuads, BeamWidthAndSwitchesShapeTheCandidatePool)
+{
+  typedef TS::Clustering_candidate C;
+  Mesh m = read("monkey_saddle");
+  const TS::Clustering_result full = saddle_clustering(m, at_six());
+  ASSERT_GT(from_origin(full, C::HIERARCHICAL), 1u) << "the fixture must have a beam wider than 1";
+  ASSERT_EQ(from_origin(full, C::KMEANS), 1u);
+  ASSERT_GE(from_origin(full, C::QUAD_STRIPS), 1u);
+
+  const TS::Clustering_result narrow = saddle_clustering(m, at_six().number_of_candidates(1));
+  EXPECT_EQ(from_origin(narrow, C::HIERARCHICAL), 1u);
+  const TS::Clustering_result no_kmeans = saddle_clustering(m, at_six().use_kmeans_candidate(false));
+  EXPECT_EQ(from_origin(no_kmeans, C::KMEANS), 0u);
+  EXPECT_EQ(from_origin(no_kmeans, C::HIERARCHICAL), from_origin(full, C::HIERARCHICAL));
+  const TS::Clustering_result no_strips = saddle_clustering(m, at_six().use_strip_candidates(false));
+  EXPECT_EQ(from_origin(no_strips, C::QUAD_STRIPS), 0u);
+  EXPECT_EQ(from_origin(no_strips, C::KMEANS), 1u);
+}
+
+// exact_clustering_limit decides the path of AUTOMATIC_PATH: at or above
+// the number of faces the weights are the pairwise sums computed here; below
+// it they are the descriptor path's estimates, an upper bound of those sums.
+TEST(ClusterQuads, ExactClusteringLimitDecidesThePath)
+{
+  Mesh m = read("monkey_saddle");
+  ASSERT_EQ(m.number_of_faces(), 100u);
+  for(std::size_t limit : {std::size_t(100), std::size_t(99)})
+  {
+    Maps mp = maps(m);
+    const TS::Clustering_result r = TS::cluster_panels(
+      m, TS::parameters::number_of_tiles(6).exact_clustering_limit(limit).face_cluster_map(mp.cluster)
+           .face_orientation_map(mp.orientation));
+    const double w = exact_weight(m, mp);
+    const bool exact = limit >= 100;
+    EXPECT_EQ(r.path, exact ? TS::EXACT_PATH : TS::DESCRIPTOR_PATH) << limit;
+    EXPECT_EQ(r.weights_are_exact, exact) << limit;
+    if(exact)
+      EXPECT_NEAR(r.total_weight, w, 1e-9 * w);
+    else
+      EXPECT_GT(r.total_weight, w * (1 + 1e-6)) << "an estimate from above, not the pairwise sum";
+  }
+}
+
+// The score is W / W1 + flexibility_penalty x (D0 - D) / D0 +
+// structure_penalty x V / V1 (cluster_panels()): without both penalties the
+// chosen candidate has the least weight, computed here from its labelling;
+// with an overwhelming flexibility penalty the largest DOF, with an
+// overwhelming structure penalty the least length deviation.
+TEST(ClusterQuads, PenaltiesOfTheScoreDecideTheChoice)
+{
+  Mesh m = read("monkey_saddle");
+  const auto selectable = [](const TS::Clustering_candidate& c) {
+    return c.origin != TS::Clustering_candidate::GRID_SWEEPS;
+  };
+  const TS::Clustering_result by_weight =
+    saddle_clustering(m, at_six().flexibility_penalty(0.0).structure_penalty(0.0));
+  std::vector<double> weight;
+  for(const TS::Clustering_candidate& c : by_weight.candidates)
+    weight.push_back(selectable(c) ? labelling_weight(m, c.face_cluster) : HUGE_VAL);
+  const double least = *std::min_element(weight.begin(), weight.end());
+  EXPECT_LE(weight[by_weight.chosen_candidate], least * (1 + 1e-9));
+
+  const TS::Clustering_result by_dof =
+    saddle_clustering(m, at_six().flexibility_penalty(1e9).structure_penalty(0.0));
+  std::size_t most = 0;
+  for(const TS::Clustering_candidate& c : by_dof.candidates)
+    if(selectable(c)) most = (std::max)(most, c.degree_of_flexibility);
+  EXPECT_EQ(by_dof.candidates[by_dof.chosen_candidate].degree_of_flexibility, most);
+
+  const TS::Clustering_result by_length =
+    saddle_clustering(m, at_six().flexibility_penalty(0.0).structure_penalty(1e9));
+  double smallest = HUGE_VAL;
+  for(const TS::Clustering_candidate& c : by_length.candidates)
+    if(selectable(c)) smallest = (std::min)(smallest, c.length_deviation);
+  EXPECT_EQ(by_length.candidates[by_length.chosen_candidate].length_deviation, smallest);
+
+  // The penalties changed the choice on this fixture: not all three agree.
+  const std::vector<std::size_t>& a = by_weight.candidates[by_weight.chosen_candidate].face_cluster;
+  EXPECT_TRUE(a != by_dof.candidates[by_dof.chosen_candidate].face_cluster ||
+              a != by_length.candidates[by_length.chosen_candidate].face_cluster);
+}
+
+// random_seed draws the k-means start: the same seed gives the same k-means
+// candidate, and some seeds give another one on this fixture.
+TEST(ClusterQuads, RandomSeedDrawsTheKMeansStart)
+{
+  Mesh m = read("monkey_saddle");
+  const auto kmeans = [&](unsigned int seed) {
+    const TS::Clustering_result r = saddle_clustering(m, at_six().random_seed(seed));
+    for(const TS::Clustering_candidate& c : r.candidates)
+      if(c.origin == TS::Clustering_candidate::KMEANS)
+        return c.face_cluster;
+    ADD_FAILURE() << "no k-means candidate with seed " << seed;
+    return std::vector<std::size_t>();
+  };
+  const std::vector<std::size_t> first = kmeans(1);
+  EXPECT_EQ(kmeans(1), first);
+  std::set<std::vector<std::size_t> > distinct{kmeans(TS::defaults::random_seed), first};
+  for(unsigned int seed = 2; seed < 6; ++seed) distinct.insert(kmeans(seed));
+  EXPECT_GT(distinct.size(), 1u);
 }
 
 } // namespace test_cluster_panels_unit

@@ -3,12 +3,14 @@
 #include <CGAL/Simple_cartesian.h>
 #include <CGAL/Surface_mesh.h>
 
+#include <CGAL/Tilable_surfaces/IO/report.h>
 #include <CGAL/Tilable_surfaces/IO/write_tile_count_curve.h>
 #include <CGAL/Tilable_surfaces/internal/Search/smallest_passing_tile_count.h>
 #include <CGAL/Tilable_surfaces/k_set_tilable_curve.h>
 #include <CGAL/Tilable_surfaces/make_k_set_tilable.h>
 #include <CGAL/Tilable_surfaces/measure.h>
 
+#include "congruence_check.h"
 #include "csv_cells.h"
 #include "grid_mesh.h"
 #include "hausdorff_oracle.h"
@@ -280,6 +282,83 @@ TEST(TileCountCurve, MoreMoldsNeverEndFartherThanFewer)
   EXPECT_EQ(curve[1].self_intersecting_face_pairs, 0u);
   EXPECT_LE(curve[1].hausdorff_distance, curve[0].hausdorff_distance + 1e-12);
   expect_no_k_worse_than_fewer_tried_before(curve, {});
+}
+
+namespace {
+
+// The paper's normalized F_d (its Table 1), computed here: both surfaces
+// scaled so that the input's largest bounding-box side is 1, the sum of the
+// squared displacements over the number of vertices.
+double normalized_distance_term(const Mesh& result, const Mesh& input)
+{
+  const CGAL::Bbox_3 box = CGAL::bbox_3(input.points().begin(), input.points().end());
+  const double side = (std::max)({box.xmax() - box.xmin(), box.ymax() - box.ymin(), box.zmax() - box.zmin()});
+  double sum = 0;
+  for(auto v : vertices(input)) sum += CGAL::squared_distance(result.point(v), input.point(v));
+  return sum / (side * side) / double(input.number_of_vertices());
+}
+
+} // namespace
+
+// The JSON report (IO/report.h) of a deviation search, against what the test
+// measures itself: K and the cluster sizes counted from the maps, the
+// largest displacement and the normalized F_d from the points, the Hausdorff
+// distance by the oracle, the congruence by its own fit, one row per K tried
+// with the kept K within the budget. A tolerance below the result's
+// congruence error makes the report say it is not tilable.
+TEST(Report, JsonOfADeviationSearchStatesWhatTheTestMeasures)
+{
+  Mesh mesh = small_saddle();
+  const Mesh input = mesh;
+  auto cluster = mesh.add_property_map<Mesh::Face_index, int>("f:c", -1).first;
+  auto orientation = mesh.add_property_map<Mesh::Face_index, int>("f:o", -1).first;
+  const double budget = 0.05;
+  const TS::K_set_tilable_result r = TS::make_k_set_tilable(
+    mesh, TSP::max_deviation(budget).face_cluster_map(cluster).face_orientation_map(orientation));
+  ASSERT_TRUE(r.is_tilable());
+  const nlohmann::json report = TS::IO::tilability_report_json(r);
+
+  std::map<int, std::size_t> sizes;
+  for(auto f : faces(mesh)) ++sizes[cluster[f]];
+  std::vector<std::size_t> by_id;
+  for(const auto& [id, n] : sizes) { EXPECT_EQ(id, int(by_id.size())); by_id.push_back(n); }
+  ASSERT_LT(by_id.size(), num_faces(mesh)) << "a K that moves the mesh";
+  EXPECT_EQ(report["K"].get<std::size_t>(), by_id.size());
+  EXPECT_EQ(report["cluster_sizes"].get<std::vector<std::size_t> >(), by_id);
+  double largest = 0;
+  for(auto v : vertices(mesh)) largest = (std::max)(largest, std::sqrt(CGAL::squared_distance(mesh.point(v), input.point(v))));
+  ASSERT_GT(largest, 0.0);
+  EXPECT_NEAR(report["displacement"]["max"].get<double>(), largest, 1e-12);
+  const double f_d = normalized_distance_term(mesh, input);
+  EXPECT_NEAR(report["normalized_terms"]["distance"].get<double>(), f_d, 1e-9 * f_d);
+  EXPECT_NEAR(report["fidelity"]["hausdorff"]["max"].get<double>(), hausdorff_oracle::distances(mesh, input).hausdorff(),
+              hausdorff_oracle::sampling_tolerance(input));
+  const double congruence = report["congruence_error"]["worst"].get<double>();
+  EXPECT_LE(congruence, 1e-6);
+  EXPECT_LE(congruence_by_umeyama(mesh, cluster, orientation), 2 * congruence + 1e-12)
+    << "each panel against its cluster's first: at most twice the error against the S-quad";
+
+  ASSERT_EQ(report["tried_K"].size(), r.trials.size());
+  bool kept_row = false;
+  for(const nlohmann::json& row : report["tried_K"])
+    if(row["K"].get<std::size_t>() == by_id.size())
+    {
+      kept_row = true;
+      EXPECT_TRUE(row["tilable"].get<bool>());
+      EXPECT_LE(row["hausdorff_distance"].get<double>(), budget);
+    }
+  EXPECT_TRUE(kept_row) << "the K kept is a K tried";
+
+  ASSERT_GT(congruence, 0.0);
+  const auto says_not_tilable = [](const nlohmann::json& j) {
+    for(const nlohmann::json& w : j["buildability"]["warnings"])
+      if(w.get<std::string>().rfind("not tilable", 0) == 0) return true;
+    return false;
+  };
+  EXPECT_FALSE(says_not_tilable(report));
+  const nlohmann::json strict = TS::IO::tilability_report_json(r, congruence / 2);
+  EXPECT_TRUE(says_not_tilable(strict));
+  EXPECT_EQ(strict["congruence_error"]["tolerance"].get<double>(), congruence / 2);
 }
 
 } // namespace test_deviation_budget_unit

@@ -109,6 +109,36 @@ TEST(WriteTiledPLY, BinaryAndAsciiReadBackIdentically)
   }
 }
 
+// stream_precision: the ASCII coordinates are written with that many
+// significant digits, so that they read back rounded to them.
+TEST(WriteTiledPLY, StreamPrecisionRoundsTheAsciiCoordinates)
+{
+  Mesh mesh;
+  const Point p(1.0 / 3, 2.0 / 3, 1.23456789);
+  std::vector<Mesh::Vertex_index> v;
+  for(const Point& corner : {Point(0, 0, 0), Point(1, 0, 0), p, Point(0, 1, 0)}) v.push_back(mesh.add_vertex(corner));
+  mesh.add_face(v[0], v[1], v[2], v[3]);
+  auto cluster = mesh.add_property_map<Mesh::Face_index, int>("f:c", 0).first;
+  auto orientation = mesh.add_property_map<Mesh::Face_index, int>("f:o", 0).first;
+  for(int digits : {4, 17})
+  {
+    std::ostringstream out(std::ios::binary);
+    ASSERT_TRUE(TS::IO::write_tiled_PLY(out, mesh, TSP::face_cluster_map(cluster).face_orientation_map(orientation)
+                                                     .use_binary_mode(false).stream_precision(digits)));
+    const Mesh back = read_back(out.str());
+    ASSERT_EQ(back.number_of_vertices(), 4u);
+    const Point q = back.point(Mesh::Vertex_index(2));
+    if(digits == 17)
+      EXPECT_EQ(q, p);
+    else
+    {
+      EXPECT_DOUBLE_EQ(q.x(), 0.3333);
+      EXPECT_DOUBLE_EQ(q.y(), 0.6667);
+      EXPECT_DOUBLE_EQ(q.z(), 1.235);
+    }
+  }
+}
+
 TEST(WriteTiledPLY, WorksForAnotherMeshType)
 {
   typedef CGAL::Polyhedron_3<Kernel, CGAL::Polyhedron_items_with_id_3> Polyhedron;

@@ -9,6 +9,7 @@
 #include "congruence_check.h"
 #include "hausdorff_oracle.h"
 
+#include "grid_mesh.h"
 #include "test_mesh.h"
 #include "tube_mesh.h"
 
@@ -266,6 +267,103 @@ TEST(KSetTilableSurface, RefiningIsNoFartherThanTheSplitClusteringSolvedFromTheI
   EXPECT_TRUE(hausdorff_oracle::no_farther(mesh, at_28, original));
   EXPECT_TRUE(hausdorff_oracle::no_farther(mesh, input, original));
   EXPECT_LE(congruence_by_umeyama(mesh, surface.face_cluster_map(), surface.face_orientation_map()), 1e-6);
+}
+
+// use_candidate(i) makes candidate i of the pool of the last cluster() the
+// clustering in the maps: the same partition of the faces, K clusters, the
+// pool kept, the DOF returned the object's; its orientations are those of
+// its S-quads, so that a solve ends congruent by the test's own fit.
+TEST(KSetTilableSurface, UseCandidateMakesThatCandidateTheClustering)
+{
+  Mesh mesh = read("monkey_saddle.off");
+  TS::K_set_tilable_surface surface(mesh);
+  const TS::Clustering_result& c = surface.cluster(TSP::number_of_tiles(6));
+  const std::vector<TS::Clustering_candidate> pool = c.candidates;
+  const std::vector<std::size_t>& chosen = pool[c.chosen_candidate].face_cluster;
+  const auto other = std::find_if(pool.begin(), pool.end(),
+                                  [&](const TS::Clustering_candidate& p) { return p.face_cluster != chosen; });
+  ASSERT_NE(other, pool.end()) << "the fixture's pool holds another labelling than the chosen one";
+  const std::size_t dof = surface.use_candidate(std::size_t(other - pool.begin()));
+  EXPECT_EQ(dof, surface.degree_of_flexibility());
+  EXPECT_EQ(surface.number_of_clusters(), 6u);
+  EXPECT_EQ(surface.clustering().candidates.size(), pool.size());
+  std::map<std::size_t, int> id_of;  // the candidate's label -> the map's id, one to one
+  std::set<int> ids;
+  for(auto f : faces(mesh))
+  {
+    const int id = int(get(surface.face_cluster_map(), f));
+    EXPECT_EQ(id_of.emplace(other->face_cluster[std::size_t(f)], id).first->second, id) << f;
+    ids.insert(id);
+  }
+  EXPECT_EQ(ids.size(), id_of.size());
+  EXPECT_EQ(ids.size(), 6u);
+  ASSERT_TRUE(surface.optimize().converged);
+  EXPECT_LE(congruence_by_umeyama(mesh, surface.face_cluster_map(), surface.face_orientation_map()), 2e-6);
+}
+
+// predict_displacement() predicts the first step of the object's solve
+// from the input (as the free function does for its solve: two squares in
+// one cluster, one corner off): the largest move of one iteration of
+// optimize(). After a full solve moved the mesh it predicts the same,
+// and restore_input() gives back the input points bit for bit.
+TEST(KSetTilableSurface, PredictionAndRestoreStartFromTheInput)
+{
+  Mesh mesh = grid<Mesh>(2, 1, 1.0, 1.0);
+  mesh.point(Mesh::Vertex_index(5)) = Point(2.0, 1.03, 0.01);
+  const Mesh input = mesh;
+  TS::K_set_tilable_surface surface(mesh);
+  std::map<Mesh::Face_index, int> one, orientation;
+  for(auto f : faces(mesh)) { one[f] = 0; orientation[f] = 0; }
+  surface.set_clustering(boost::make_assoc_property_map(one), boost::make_assoc_property_map(orientation));
+  const TS::Displacement_prediction predicted = surface.predict_displacement();
+  ASSERT_GT(predicted.max_euclidean, 1e-4);
+  const CGAL::Bbox_3 box = CGAL::bbox_3(input.points().begin(), input.points().end());
+  const double diagonal = std::sqrt(CGAL::square(box.xmax() - box.xmin()) + CGAL::square(box.ymax() - box.ymin()) +
+                                    CGAL::square(box.zmax() - box.zmin()));
+  double moved = 0;
+  ASSERT_EQ(surface.optimize(TSP::number_of_iterations(1)).iterations, 1);
+  for(auto v : vertices(mesh)) moved = (std::max)(moved, std::sqrt(CGAL::squared_distance(mesh.point(v), input.point(v))));
+  EXPECT_NEAR(moved / diagonal, predicted.max_euclidean, 1e-9 * predicted.max_euclidean);
+
+  ASSERT_TRUE(surface.optimize().converged);
+  ASSERT_NE(points(mesh), points(input)) << "the solve moved the mesh";
+  EXPECT_EQ(surface.predict_displacement().max_euclidean, predicted.max_euclidean);
+  ASSERT_TRUE(surface.optimize().converged);
+  surface.restore_input();
+  EXPECT_EQ(points(mesh), points(input));
+  EXPECT_EQ(surface.measure().max_displacement, 0.0);
+}
+
+// tile_catalog(): one tile per cluster, with the instance count counted
+// here, and every instance within the tile's worst deviation (at most the
+// tolerance) of its corners after a rigid fit computed here (Eigen::umeyama).
+TEST(KSetTilableSurface, TileCatalogFitsEveryInstance)
+{
+  Mesh mesh = read("monkey_saddle.off");
+  TS::K_set_tilable_surface surface(mesh);
+  surface.cluster(TSP::number_of_tiles(6));
+  ASSERT_TRUE(surface.optimize().converged);
+  const std::vector<TS::Tile> tiles = surface.tile_catalog();
+  ASSERT_EQ(tiles.size(), 6u);
+  const double length = TS::mean_edge_length(mesh);
+  std::vector<std::size_t> instances(tiles.size(), 0);
+  for(auto f : faces(mesh))
+  {
+    const std::size_t c = std::size_t(get(surface.face_cluster_map(), f));
+    ++instances[c];
+    const TS::Panel q = TS::face_panel(f, mesh, TS::Panel_orientation(int(get(surface.face_orientation_map(), f))));
+    Eigen::Matrix<double, 3, 4> mold, panel;
+    for(int i = 0; i < 4; ++i) { mold.col(i) = tiles[c].corners[i]; panel.col(i) = q[i]; }
+    const Eigen::Matrix4d T = Eigen::umeyama(mold, panel, false);
+    const Eigen::Matrix<double, 3, 4> fitted = (T.topLeftCorner<3, 3>() * mold).colwise() + T.topRightCorner<3, 1>();
+    EXPECT_LE((fitted - panel).colwise().norm().maxCoeff(), tiles[c].worst_deviation + 1e-9 * length) << f;
+  }
+  for(std::size_t c = 0; c < tiles.size(); ++c)
+  {
+    EXPECT_EQ(tiles[c].id, c);
+    EXPECT_EQ(tiles[c].instance_count, instances[c]);
+    EXPECT_LE(tiles[c].worst_deviation, 1e-6 * length);
+  }
 }
 
 // orientation_policy() is the policy of the clustering now: cluster()'s

@@ -80,6 +80,42 @@ TEST(Measure, MovedVertexGivesItsDisplacement)
   EXPECT_DOUBLE_EQ(m.normalized_terms.distance, 0.0025 / 6);
 }
 
+// The four-argument form reads the input through its own maps. The input
+// positions kept as a property of the result mesh give the displacements by
+// hand of the test above; an input vertex index map that pairs vertex i of
+// the result with vertex 5 - i of the input gives the distances to those,
+// computed here.
+TEST(Measure, TheInputsOwnMapsPairTheVertices)
+{
+  Mesh result = two_squares();
+  const Clustering c = every_face_alone(result);
+  auto kept = result.add_property_map<Vertex, Point>("v:input").first;
+  for(Vertex v : vertices(result)) kept[v] = result.point(v);
+  result.point(Vertex(0)) = Point(0, 0, 0.1);
+  const TS::Tilability_measure own =
+    TS::measure_tilability(result, result, clustering_parameters(c), TS::parameters::vertex_point_map(kept));
+  EXPECT_DOUBLE_EQ(own.max_displacement, 0.1);
+  EXPECT_DOUBLE_EQ(own.mean_displacement, 0.1 / 6);
+  EXPECT_DOUBLE_EQ(own.max_approximation_error, 0.1 / std::sqrt(5.0));
+
+  Mesh input = two_squares();
+  const std::size_t n = input.number_of_vertices();
+  auto reversed = input.add_property_map<Vertex, std::size_t>("v:reversed").first;
+  for(Vertex v : vertices(input)) reversed[v] = n - 1 - std::size_t(v);
+  const TS::Tilability_measure paired =
+    TS::measure_tilability(result, input, clustering_parameters(c), TS::parameters::vertex_index_map(reversed));
+  double largest = 0, sum = 0;
+  for(Vertex v : vertices(result))
+  {
+    const double d = std::sqrt(CGAL::squared_distance(result.point(v), input.point(Vertex(n - 1 - std::size_t(v)))));
+    largest = (std::max)(largest, d);
+    sum += d;
+  }
+  EXPECT_DOUBLE_EQ(paired.max_displacement, largest);
+  EXPECT_DOUBLE_EQ(paired.mean_displacement, sum / double(n));
+  EXPECT_GT(largest, 1.0) << "the pairing is not the identity";
+}
+
 TEST(Measure, QuadTranslatedOffThePlane)
 {
   Mesh input = unit_square();

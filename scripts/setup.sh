@@ -29,6 +29,9 @@ case "${1:-}" in
 esac
 missing=()
 for p in "${packages[@]}"; do
+  # npm may come with a Node.js that is no Debian package of that name (NodeSource's
+  # nodejs provides it and conflicts with Debian's npm): the command is what counts.
+  [ "$p" = npm ] && command -v npm > /dev/null && continue
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
 done
 if [ ${#missing[@]} -gt 0 ]; then

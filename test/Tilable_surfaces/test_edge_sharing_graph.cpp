@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <functional>
 #include <vector>
 
@@ -112,6 +113,34 @@ TEST(EdgeSharingGraph, FourByFourQuadrantsCountedByHand)
   // {1,3}-horizontal: DOF 2.
   EXPECT_EQ(g.merge_clusters(0, 3, TS::Panel_orientation(0)), 2u);
   EXPECT_FALSE(g.is_alive(3));
+}
+
+// compact_cluster_ids() drops the ids of merged clusters: the clusters
+// alive keep their order and their components, numbered 0..K'-1. On the
+// quadrants above, merging clusters 0 and 1 (side by side) joins the
+// horizontal components {0, 2} and {1, 3}: DOF 3 by hand.
+TEST(EdgeSharingGraph, CompactingIdsKeepsTheOrderAndTheComponents)
+{
+  Mesh m = grid<Mesh>(4, 4);
+  Labelling l = label(m, [](int f) { return (f % 4) / 2 + 2 * ((f / 4) / 2); });
+  TS::Edge_sharing_graph<Mesh> g(m, 4, l.cluster, l.orientation);
+  EXPECT_EQ(g.merge_clusters(0, 1, TS::Panel_orientation(0)), 3u);
+  EXPECT_EQ(g.number_of_clusters(), 4u) << "the merged id stays reserved";
+  const std::vector<std::size_t> alive{0, 2, 3};
+  std::vector<std::array<std::size_t, 4> > before;
+  for(std::size_t c : alive) before.push_back(g.cluster_pattern(c));
+  g.compact_cluster_ids();
+  EXPECT_EQ(g.number_of_clusters(), 3u);
+  EXPECT_EQ(g.degree_of_flexibility(), 3u);
+  for(std::size_t a = 0; a < 3; ++a)
+  {
+    EXPECT_TRUE(g.is_alive(a));
+    for(std::size_t b = 0; b < 3; ++b)
+      for(int i = 0; i < 4; ++i)
+        for(int j = 0; j < 4; ++j)
+          EXPECT_EQ(g.component(a, i) == g.component(b, j), before[a][i] == before[b][j])
+            << "new " << a << "." << i << " and " << b << "." << j;
+  }
 }
 
 TEST(EdgeSharingGraph, EdgeComponentMapColoursMeshEdges)

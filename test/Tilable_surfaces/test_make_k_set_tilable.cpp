@@ -134,6 +134,37 @@ TEST(MakeKSetTilable, CongruenceToleranceDefinesTilable)
     << "twice the tolerance: each panel against its cluster's first";
 }
 
+// vertex_point_map: the pipeline reads and writes the points of the map
+// given and leaves the mesh's own points (here an affine image of the
+// input, moved far away) alone; its result is the one of a plain copy of the input, bit for bit,
+// congruent by the test's own fit.
+TEST(MakeKSetTilable, ReadsAndWritesThePointsOfTheVertexPointMapGiven)
+{
+  Mesh plain = grid<Mesh>(4, 3, 0.5, 0.5);
+  for(auto v : vertices(plain))
+  {
+    const double x = plain.point(v).x() - 1, y = plain.point(v).y() - 0.75;
+    plain.point(v) = Point(x, y, 0.4 * x * y + 0.1 * x * x * x);
+  }
+  Mesh mesh = plain;
+  auto design = mesh.add_property_map<Mesh::Vertex_index, Point>("v:design").first;
+  for(auto v : vertices(mesh))
+  {
+    design[v] = mesh.point(v);
+    const Point& p = mesh.point(v);
+    mesh.point(v) = Point(100 - 3 * p.x(), 2 * p.y(), -p.z());  // not similar to the design
+  }
+  const auto own = points(mesh);
+  auto cluster = plain.add_property_map<Mesh::Face_index, int>("f:c", -1).first;
+  auto orientation = plain.add_property_map<Mesh::Face_index, int>("f:o", -1).first;
+  ASSERT_TRUE(TS::make_k_set_tilable(plain, TSP::number_of_tiles(4).face_cluster_map(cluster)
+                                              .face_orientation_map(orientation)).is_tilable());
+  ASSERT_TRUE(TS::make_k_set_tilable(mesh, TSP::number_of_tiles(4).vertex_point_map(design)).is_tilable());
+  EXPECT_EQ(points(mesh), own);
+  for(auto v : vertices(mesh)) EXPECT_EQ(design[v], plain.point(v)) << v;
+  EXPECT_LE(congruence_by_umeyama(plain, cluster, orientation), 2e-6);
+}
+
 TEST(MakeKSetTilable, ErrorsLeaveTheMeshAndTheMapsUntouched)
 {
   Mesh mesh = read("monkey_saddle.off");

@@ -401,6 +401,13 @@ TEST(Optimize, PaperWeightsLowerTheSpreadTheyWeigh)
   EXPECT_LT(o.volume, (std::min)(e.volume, a.volume));
 }
 
+// The weighted sum of the paper's terms, by hand.
+TEST(EnergyTerms, WeightedSumWeighsEachTermByItsOwnWeight)
+{
+  const TS::Energy_terms terms{1, 2, 3, 4, 5}, weights{1e-4, 10, 0, 100, 1000};
+  EXPECT_DOUBLE_EQ(terms.weighted_sum(weights), 1e-4 + 20 + 0 + 400 + 5000);
+}
+
 // convergence_tolerance: a looser one stops both solvers sooner (iterations
 // counted by the visitor; the monkey saddle's greedy 6 clusters: measured
 // 100 against 221 Gauss-Newton iterations, 138 against 1088 of the conjugate

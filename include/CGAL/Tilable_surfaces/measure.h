@@ -51,11 +51,12 @@ struct Tilability_measure
   /// The panel tolerance the result was held to (`panel_tolerance`), in
   /// model units; 0 in the exact mode.
   double panel_tolerance = 0;
-  /// Per face (by face index): the largest corner distance, in model units,
+  /// Per face (by the mesh's own face index, `CGAL::get_initialized_face_index_map(pm)`,
+  /// whatever index map the steps used): the largest corner distance, in model units,
   /// between its instance and its cluster's S-quad (its mold) after the best
   /// rigid fit, as in `cluster_congruence_errors` but absolute.
   std::vector<double> panel_deviations;
-  /// Per face (by face index): its cluster.
+  /// Per face (by the same index): its cluster.
   std::vector<std::size_t> panel_clusters;
   /// The largest of `panel_deviations`, in model units.
   double worst_panel_deviation = 0;
@@ -339,6 +340,34 @@ inline Tilability_measure measure_tilability(const Tilable_problem& problem,
   return m;
 }
 
+// Per face of the problem of `pm` and `np` (by the index of np's face index
+// map), the mesh's own face index: the steps of K_set_tilable_surface index
+// the faces in a canonical order, the user by the mesh's.
+template <typename PolygonMesh, typename NamedParameters>
+std::vector<std::size_t> mesh_face_indices(const PolygonMesh& pm, const NamedParameters& np)
+{
+  const auto fim = CGAL::get_initialized_face_index_map(pm, np);
+  const auto own = CGAL::get_initialized_face_index_map(pm);
+  std::vector<std::size_t> index(num_faces(pm));
+  for(auto f : faces(pm)) index[std::size_t(get(fim, f))] = std::size_t(get(own, f));
+  return index;
+}
+
+// The per-face entries of `m`, by problem face, put by the mesh's own face
+// index (`mesh_face_indices()`).
+inline void use_mesh_face_order(Tilability_measure& m, const std::vector<std::size_t>& index)
+{
+  std::vector<double> deviations(m.panel_deviations.size());
+  std::vector<std::size_t> clusters(m.panel_clusters.size());
+  for(std::size_t i = 0; i < index.size() && i < deviations.size() && i < clusters.size(); ++i)
+  {
+    deviations[index[i]] = m.panel_deviations[i];
+    clusters[index[i]] = m.panel_clusters[i];
+  }
+  m.panel_deviations = std::move(deviations);
+  m.panel_clusters = std::move(clusters);
+}
+
 // measure_tilability() on meshes validate_panel_mesh() accepted, with the
 // same numbers of vertices and faces.
 template <typename PolygonMesh, typename NamedParameters, typename InputNamedParameters>
@@ -351,7 +380,9 @@ Tilability_measure measure_tilability(Validated_mesh, const PolygonMesh& result,
     internal::const_vertex_point_map(input, np_input),
     CGAL::get_initialized_vertex_index_map(input, np_input));
   const Eigen::SparseMatrix<double> D = fairness_operator(result, input_points, np);
-  return measure_tilability(problem, D, input_points, problem.points, panel_tolerance_of(np));
+  Tilability_measure m = measure_tilability(problem, D, input_points, problem.points, panel_tolerance_of(np));
+  use_mesh_face_order(m, mesh_face_indices(result, np));
+  return m;
 }
 
 } // namespace internal

@@ -115,6 +115,7 @@ struct Optimization_setup
   Solver_type solver = CONSTRAINED_GAUSS_NEWTON;
   Solver_settings settings;
   double panel_tolerance = 0; // model units; 0: exact mode
+  std::vector<std::size_t> mesh_face_index; // per problem face (mesh_face_indices())
   std::vector<bool> fixed;
   Eigen::RowVector3d centre;
   double scale = 1;
@@ -132,6 +133,7 @@ struct Optimization_setup
 
     panel_tolerance = panel_tolerance_of(np);
     problem = make_tilable_problem(pm, np);
+    mesh_face_index = mesh_face_indices(pm, np);
     solver = choose_parameter(get_parameter(np, TS_np::solver), defaults::solver);
     const bool gauss_newton = (solver == CONSTRAINED_GAUSS_NEWTON);
     settings.weights.distance =
@@ -231,6 +233,7 @@ inline void measure_result(const Optimization_setup& setup, const Point_matrix& 
   const Tilable_problem& problem = setup.problem;
   const double tolerance = setup.settings.congruence_tolerance;
   result.measure = measure_tilability(problem, setup.D, problem.points, moved_points(setup, Y), setup.panel_tolerance);
+  use_mesh_face_order(result.measure, setup.mesh_face_index);
   result.converged = setup.panel_tolerance > 0
                        ? result.measure.within_panel_tolerance()
                        : result.measure.congruence_error <= tolerance &&

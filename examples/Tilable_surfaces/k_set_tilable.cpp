@@ -212,7 +212,7 @@ Options parse(int argc, char** argv, bool& help)
      "of each other; default solver only")
     ("panel-tolerance", po::value<double>(&o.panel_tolerance),
      "T in model units: every panel within T of its mold (largest corner distance after the best rigid "
-     "fit) instead of exactly congruent; the surface moves only as far as T needs, panels that already "
+     "fit) instead of exactly congruent; the result is pulled back toward the input within T, panels that already "
      "fit one mold within T may share it unmoved, and with --max-deviation K is the smallest that meets "
      "both (default 0: exact, 1e-6 of the mean edge)")
     ("panel-tolerance-relative", po::value<double>(&o.panel_tolerance_relative),

@@ -385,9 +385,9 @@ Optimization_result optimize_tilable_surface(Validated_mesh, PolygonMesh& pm, co
 ///   \cgalParamNBegin{panel_tolerance} T in model units: every instance
 ///     within T of its mold (largest corner distance after the best rigid
 ///     fit) suffices, replacing `congruence_tolerance`; the default solver
-///     stops as soon as it is within T, then pulls the result back toward the
-///     input while it stays within T; a finite length >= 0, default 0 (exact
-///     mode) \cgalParamNEnd
+///     leaves a start already within T unmoved, and pulls its result back
+///     toward the input while it stays within T; a finite length >= 0,
+///     default 0 (exact mode) \cgalParamNEnd
 ///   \cgalParamNBegin{convergence_tolerance} Gauss-Newton: stop once congruent
 ///     and the largest step is below this fraction of the mean edge length,
 ///     default 1e-9; conjugate gradient: stop when the relative decrease of

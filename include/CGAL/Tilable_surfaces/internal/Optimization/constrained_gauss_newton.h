@@ -265,8 +265,7 @@ private:
       m_c = m_c_trial;
       if(!record())
         return true;
-      if(congruent() &&
-         (m_settings.within_tolerance_suffices || step_length <= m_settings.convergence_tolerance * m_ell))
+      if(congruent() && step_length <= m_settings.convergence_tolerance * m_ell)
         return true;
     }
     return false;
@@ -369,10 +368,8 @@ private:
       if(!record())
         return true;
       const double residual = m_c.cwiseAbs().maxCoeff();
-      // Once congruent, a few more cheap quadratic steps reach round-off;
-      // within a panel tolerance, each one would only move the surface more.
-      if(congruent() && (m_settings.within_tolerance_suffices ||
-                         residual <= tuning::lm_round_off_residual * m_tolerance * m_ell ||
+      // Once congruent, a few more cheap quadratic steps reach round-off.
+      if(congruent() && (residual <= tuning::lm_round_off_residual * m_tolerance * m_ell ||
                          largest_move(m_delta) <= m_settings.convergence_tolerance * m_ell))
         break;
       if(residual < tuning::solver_progress * best_residual)
@@ -412,8 +409,11 @@ private:
 // Within a panel tolerance, the result X pulled back toward the input X0:
 // the largest fraction of the move X - X0 that bisection can take back while
 // the congruence error stays within the tolerance, measured at every trial.
-// The solver's path ends just inside the tolerance, still carrying the part
-// of the move that only exactness needed.
+// X is the closest (near-)exact surface the steps converged to, and carries
+// the part of the move that only exactness needed. Stopping the steps as soon
+// as they are within the tolerance ends farther instead: the SQP steps first
+// reach the constraints, then slide along them toward the input (cmc1.obj,
+// K = 9: 1.31% of the diagonal exact, 1.94% stopped within 1e-3 of an edge).
 inline void pull_back_toward_input(const Solver_input& in, const Solver_settings& settings, Point_matrix& X,
                                    Solver_report& report)
 {

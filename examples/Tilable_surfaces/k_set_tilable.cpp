@@ -7,7 +7,7 @@
 //                 [--tangential-weight W] [--optimized-candidates N] [--improvement-rounds N]
 //                 [--candidates N] [--solver gauss-newton|paper-cg] [--fixed-boundary]
 //                 [--iterations N] [--time-limit SECONDS] [--seed S] [--threads N] [--mirror]
-//                 [--planar] [--ascii] [--quiet] [--help]
+//                 [--planar] [--panel-tolerance T | --panel-tolerance-relative t] [--ascii] [--quiet] [--help]
 //   k_set_tilable INPUT --sweep KMIN:KMAX[:STEP] --curve CURVE.csv [--html CURVE.html] [options]
 //
 // Reads a quad mesh (OFF, OBJ or PLY), makes it K-set tilable, and writes the
@@ -42,6 +42,7 @@
 #endif
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -80,6 +81,9 @@ struct Options
   int improvement_rounds = TS::defaults::number_of_improvement_rounds;
   int candidates = int(TS::defaults::number_of_candidates), iterations = -1, threads = 0;
   double time_limit = -1; // negative: none
+  // --panel-tolerance (model units) or --panel-tolerance-relative (of the
+  // input's mean edge); panel_tolerance is set from either once the mesh is read.
+  double panel_tolerance = 0, panel_tolerance_relative = 0;
   unsigned int seed = TS::defaults::random_seed;
   std::string solver = "gauss-newton";
   bool fixed_boundary = false, mirror = false, planar = false, ascii = false, quiet = false;
@@ -124,6 +128,19 @@ std::vector<std::size_t> parse_sweep(const std::string& text)
   std::vector<std::size_t> k;
   for(long long v = values[0]; v <= values[1]; v += values[2]) k.push_back(std::size_t(v));
   return k;
+}
+
+// --panel-tolerance and --panel-tolerance-relative: one at most, each a
+// finite length >= 0.
+void check_panel_tolerance(const po::variables_map& vm, const Options& o)
+{
+  if(vm.count("panel-tolerance") && vm.count("panel-tolerance-relative"))
+    throw Usage_error("give --panel-tolerance T (model units) or --panel-tolerance-relative t (of the mean edge), "
+                      "not both");
+  if(!(std::isfinite(o.panel_tolerance) && o.panel_tolerance >= 0))
+    throw Usage_error("--panel-tolerance must be a finite length >= 0 in model units");
+  if(!(std::isfinite(o.panel_tolerance_relative) && o.panel_tolerance_relative >= 0))
+    throw Usage_error("--panel-tolerance-relative must be a finite fraction >= 0 of the mean edge length");
 }
 
 Options parse(int argc, char** argv, bool& help)
@@ -193,6 +210,13 @@ Options parse(int argc, char** argv, bool& help)
     ("planar", po::bool_switch(&o.planar),
      "every panel planar as well as congruent (glass): its diagonals within 1e-6 of the mean edge "
      "of each other; default solver only")
+    ("panel-tolerance", po::value<double>(&o.panel_tolerance),
+     "T in model units: every panel within T of its mold (largest corner distance after the best rigid "
+     "fit) instead of exactly congruent; the result is pulled back toward the input within T, panels that already "
+     "fit one mold within T may share it unmoved, and with --max-deviation K is the smallest that meets "
+     "both (default 0: exact, 1e-6 of the mean edge)")
+    ("panel-tolerance-relative", po::value<double>(&o.panel_tolerance_relative),
+     "the same T as a fraction of the input's mean edge length (1e-3: a millimetre on 1 m panels)")
     ("ascii", po::bool_switch(&o.ascii), "ASCII PLY instead of binary")
     ("quiet,q", po::bool_switch(&o.quiet), "no progress on stderr");
   po::options_description hidden;
@@ -277,6 +301,7 @@ Options parse(int argc, char** argv, bool& help)
     throw Usage_error("--tangential-weight must be in (0, 1]");
   if((vm.count("optimized-candidates") && o.optimized_candidates < 0) || o.improvement_rounds < 0)
     throw Usage_error("--optimized-candidates and --improvement-rounds must be >= 0");
+  check_panel_tolerance(vm, o);
   return o;
 }
 
@@ -424,6 +449,9 @@ nlohmann::json parameters_json(const Options& o, std::size_t optimized)
           {"sweep", o.sweep.empty() ? nlohmann::json(nullptr) : nlohmann::json(o.sweep)},
           {"mirror", o.mirror},
           {"planar", o.planar},
+          {"panel_tolerance", o.panel_tolerance},
+          {"panel_tolerance_relative", o.panel_tolerance_relative > 0 ? nlohmann::json(o.panel_tolerance_relative)
+                                                                      : nlohmann::json(nullptr)},
           {"distance_weight", o.distance_weight},
           {"fairness_weight", o.fairness_weight < 0 ? TS::default_fairness_weight(solver) : o.fairness_weight},
           {"tangential_weight", o.tangential_weight},
@@ -486,6 +514,31 @@ nlohmann::json report_json(const Options& o, const TS::K_set_tilable_result& res
   return report;
 }
 
+// With a panel tolerance, the certificate: every panel within T of its mold,
+// and the worst deviation, in model units.
+void print_panel_tolerance(const TS::Tilability_measure& m)
+{
+  if(m.panel_tolerance <= 0)
+    return;
+  std::cerr << "[k_set_tilable] " << (m.within_panel_tolerance() ? "every panel within " : "NOT every panel within ")
+            << std::defaultfloat << std::setprecision(4) << m.panel_tolerance
+            << " of its mold (model units; " << m.panel_tolerance / m.mean_edge_length
+            << " of the mean edge): the worst deviates " << m.worst_panel_deviation << "\n";
+}
+
+// The mean edge length of `mesh`, the unit of --panel-tolerance-relative.
+double mean_edge_length(const Mesh& mesh)
+{
+  double sum = 0;
+  for(Mesh::Edge_index e : mesh.edges())
+    sum += std::sqrt(CGAL::squared_distance(mesh.point(mesh.source(mesh.halfedge(e))),
+                                            mesh.point(mesh.target(mesh.halfedge(e)))));
+  return mesh.number_of_edges() > 0 ? sum / double(mesh.number_of_edges()) : 0.0;
+}
+
+int run_on(const Options& o, Mesh& mesh, const Mesh& input, const TS::IO::HTML_viewer_scripts& scripts,
+           const CGAL::Real_timer& timer);
+
 int run(const Options& o)
 {
 #ifdef CGAL_LINKED_WITH_TBB
@@ -504,6 +557,16 @@ int run(const Options& o)
   timer.start();
   Mesh mesh = read_input(o.input);
   const Mesh input = mesh;
+  Options options = o;
+  if(o.panel_tolerance_relative > 0)
+    options.panel_tolerance = o.panel_tolerance_relative * mean_edge_length(mesh);
+  return run_on(options, mesh, input, scripts, timer);
+}
+
+// The run on the mesh read, with the panel tolerance in model units.
+int run_on(const Options& o, Mesh& mesh, const Mesh& input, const TS::IO::HTML_viewer_scripts& scripts,
+           const CGAL::Real_timer& timer)
+{
   Progress_visitor progress;
   progress.quiet = o.quiet;
   progress.time_limit = o.time_limit;
@@ -514,7 +577,8 @@ int run(const Options& o)
               << mesh.number_of_faces() << " faces, "
               << (!o.sweep.empty() ? "K = " + o.sweep
                   : o.max_deviation >= 0 ? "deviation budget " + std::to_string(o.max_deviation)
-                                         : "K = " + std::to_string(o.k)) << "\n";
+                                         : "K = " + std::to_string(o.k))
+              << (o.panel_tolerance > 0 ? ", panel tolerance " + std::to_string(o.panel_tolerance) : "") << "\n";
 
   auto cluster = mesh.add_property_map<Mesh::Face_index, int>("f:ts_cluster", 0).first;
   auto orientation = mesh.add_property_map<Mesh::Face_index, int>("f:ts_orientation", 0).first;
@@ -538,6 +602,7 @@ int run(const Options& o)
               .random_seed(o.seed)
               .orientation_policy(o.mirror ? TS::ALLOW_MIRRORED_PANELS : TS::PROPER_RIGID_MOTIONS)
               .planar_tiles(o.planar)
+              .panel_tolerance(o.panel_tolerance)
               .number_of_iterations(o.iterations >= 0 ? o.iterations : TS::default_number_of_iterations(solver))
               .visitor(std::ref(progress));
   if(!o.sweep.empty())
@@ -669,11 +734,14 @@ int run(const Options& o)
             << "\n";
   for(const std::string& warning : TS::buildability_warnings(m))
     std::cerr << "[k_set_tilable] WARNING: " << warning << "\n";
+  print_panel_tolerance(m);
   if(!result.is_tilable())
   {
     std::cerr << "[k_set_tilable] not every panel fits its mold "
               << (m.requires_planar_tiles ? "and is planar " : "")
-              << "within 1e-6 of the mean edge length; see the report's per-cluster congruence errors\n";
+              << (m.panel_tolerance > 0 ? "within the panel tolerance; see the report's panel_deviation\n"
+                                        : "within 1e-6 of the mean edge length; see the report's per-cluster "
+                                          "congruence errors\n");
     if(result.optimization.stalled)
       std::cerr << "[k_set_tilable] no exact solution near the input for this clustering: the solver stalled at "
                 << std::scientific << std::setprecision(2) << m.congruence_error << std::defaultfloat

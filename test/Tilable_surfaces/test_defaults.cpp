@@ -71,6 +71,7 @@ TEST(Defaults, TheUserManualStatesTheDefaultsOfDefaultsH)
     {"diagonal_weight", TS::defaults::diagonal_weight},
     {"volume_weight", TS::defaults::volume_weight},
     {"congruence_tolerance", TS::defaults::congruence_tolerance},
+    {"panel_tolerance", TS::defaults::panel_tolerance},
     {"number_of_improvement_rounds", double(TS::defaults::number_of_improvement_rounds)},
     {"feature_angle", TS::defaults::feature_angle},
     {"stream_precision", double(TS::defaults::stream_precision)}};

@@ -50,6 +50,7 @@ solves it from.
 \cgalHasModel `Grid_segment_generator` (segment_candidates.h)
 \cgalHasModel `Split_segment_generator` (segment_candidates.h)
 \cgalHasModel `Patch_segment_generator` (patch_candidates.h)
+\cgalHasModel `Tolerance_group_generator` (tolerance_candidates.h)
 */
 class CandidateGenerator
 {

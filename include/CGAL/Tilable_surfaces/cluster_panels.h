@@ -16,6 +16,7 @@
 #include <CGAL/Tilable_surfaces/validation.h>
 #include <CGAL/Tilable_surfaces/visitor.h>
 #include <CGAL/Tilable_surfaces/internal/canonical_face_order.h>
+#include <CGAL/Tilable_surfaces/internal/panel_tolerance.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/beam_search.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/candidate_generator.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/cluster_analysis.h>
@@ -222,6 +223,7 @@ Clustering_settings clustering_settings(const NP& np)
   s.policy = choose_parameter(get_parameter(np, TS_np::orientation_policy), defaults::orientation_policy);
   s.seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), defaults::random_seed);
   s.separate_twists = !choose_parameter(get_parameter(np, TS_np::planar_tiles), defaults::planar_tiles);
+  s.panel_tolerance = panel_tolerance_of(np);
   return s;
 }
 

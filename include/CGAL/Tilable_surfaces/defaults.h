@@ -114,6 +114,9 @@ constexpr double diagonal_weight = 1.0;
 constexpr double volume_weight = 1.0;
 /// `congruence_tolerance`: fabrication grade is 1e-4.
 constexpr double congruence_tolerance = 1e-6;
+/// `panel_tolerance`, in model units: 0 is the exact mode, where every
+/// instance fits its mold within `congruence_tolerance` of the mean edge.
+constexpr double panel_tolerance = 0.0;
 /// `planar_tiles`.
 constexpr bool planar_tiles = false;
 /// `number_of_improvement_rounds`.

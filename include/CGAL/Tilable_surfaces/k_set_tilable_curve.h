@@ -53,6 +53,7 @@ std::vector<Tile_count_trial> k_set_tilable_curve(PolygonMesh& pm,
   using parameters::get_parameter;
   typedef typename CGAL::GetVertexPointMap<PolygonMesh, CGAL_NP_CLASS>::type Vertex_point_map;
   auto&& visitor = internal::visitor_of(np);
+  internal::panel_tolerance_of(np); // refused before anything is done
 
   for(std::size_t k : tile_counts)
     if(k < 1 || k > num_faces(pm))

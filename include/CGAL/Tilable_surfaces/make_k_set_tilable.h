@@ -11,6 +11,7 @@
 #include <CGAL/Tilable_surfaces/K_set_tilable_result.h>
 #include <CGAL/Tilable_surfaces/K_set_tilable_surface.h>
 #include <CGAL/Tilable_surfaces/internal/Search/tile_count_search.h>
+#include <CGAL/Tilable_surfaces/internal/panel_tolerance.h>
 
 #include <CGAL/Real_timer.h>
 #include <CGAL/boost/graph/named_params_helper.h>
@@ -47,6 +48,11 @@ namespace Tilable_surfaces {
 ///     it where the deviation is not monotone in K. If no K up to the
 ///     largest does, the result is that of the largest K tried. A visitor
 ///     that stops a solve ends the search. \cgalParamNEnd
+///   \cgalParamNBegin{panel_tolerance} T in model units (default 0, exact
+///     mode): every instance within T of its mold suffices (see
+///     `optimize_tilable_surface()`); the clustering also offers the panels
+///     that already fit one mold within T grouped, and with `max_deviation`
+///     K is the smallest that meets both. \cgalParamNEnd
 ///   \cgalParamNBegin{face_cluster_map} optional output: cluster id 0..K-1 of
 ///     every face. \cgalParamNEnd
 ///   \cgalParamNBegin{face_orientation_map} optional output: orientation 0..7 of
@@ -72,6 +78,7 @@ K_set_tilable_result make_k_set_tilable(PolygonMesh& pm, const CGAL_NP_CLASS& np
   using parameters::get_parameter;
   typedef typename CGAL::GetVertexPointMap<PolygonMesh, CGAL_NP_CLASS>::type Vertex_point_map;
   auto&& visitor = internal::visitor_of(np);
+  internal::panel_tolerance_of(np); // refused before anything is done
 
   K_set_tilable_result result;
   CGAL::Real_timer total;

@@ -17,6 +17,7 @@
 #include <CGAL/Tilable_surfaces/internal/Tilable_problem.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/congruence_quantities.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/fairness_operator.h>
+#include <CGAL/Tilable_surfaces/internal/panel_tolerance.h>
 #include <CGAL/Tilable_surfaces/named_parameters.h>
 #include <CGAL/Tilable_surfaces/validation.h>
 
@@ -47,6 +48,25 @@ struct Tilability_measure
   std::vector<double> cluster_congruence_errors;
   /// Per cluster: its number of instances (faces).
   std::vector<std::size_t> cluster_sizes;
+  /// The panel tolerance the result was held to (`panel_tolerance`), in
+  /// model units; 0 in the exact mode.
+  double panel_tolerance = 0;
+  /// Per face (by the mesh's own face index, `CGAL::get_initialized_face_index_map(pm)`,
+  /// whatever index map the steps used): the largest corner distance, in model units,
+  /// between its instance and its cluster's S-quad (its mold) after the best
+  /// rigid fit, as in `cluster_congruence_errors` but absolute.
+  std::vector<double> panel_deviations;
+  /// Per face (by the same index): its cluster.
+  std::vector<std::size_t> panel_clusters;
+  /// The largest of `panel_deviations`, in model units.
+  double worst_panel_deviation = 0;
+  /// Whether every panel is within `panel_tolerance` of its mold (with
+  /// `requires_planar_tiles`, its diagonals too); false in the exact mode.
+  bool within_panel_tolerance() const
+  {
+    return panel_tolerance > 0 && worst_panel_deviation <= panel_tolerance &&
+           (!requires_planar_tiles || planarity_error * mean_edge_length <= panel_tolerance);
+  }
   /// Whether instances could be mirror images of their S-quad
   /// (`orientation_policy` `ALLOW_MIRRORED_PANELS`): the fits above are then
   /// proper or improper, whichever is closer.
@@ -167,6 +187,13 @@ struct Tile
   /// Its mold (`Tilability_measure::cluster_molds`): tiles whose S-quads are
   /// congruent share one, and a fabricator cuts it once.
   std::size_t mold = 0;
+  /// Its instances, by face index, in increasing order.
+  std::vector<std::size_t> instance_faces;
+  /// The deviation of each of them from the S-quad, as `worst_deviation`.
+  std::vector<double> instance_deviations;
+  /// The panel tolerance the result was held to, in the mesh's units (0:
+  /// exact mode).
+  double panel_tolerance = 0;
 };
 
 /// \ingroup PkgTilableSurfacesRef
@@ -184,7 +211,10 @@ inline std::vector<std::string> buildability_warnings(const Tilability_measure& 
   std::vector<std::string> w;
   std::size_t faces = 0;
   for(std::size_t n : m.cluster_sizes) faces += n;
-  if(m.congruence_error > congruence_tolerance)
+  if(m.panel_tolerance > 0 && !m.within_panel_tolerance())
+    w.push_back("not tilable: a panel deviates " + std::to_string(m.worst_panel_deviation) +
+                " (model units) from its mold, above the panel tolerance " + std::to_string(m.panel_tolerance));
+  else if(m.panel_tolerance == 0 && m.congruence_error > congruence_tolerance)
     w.push_back("not tilable: the congruence error " + std::to_string(m.congruence_error) +
                 " (mean edge lengths) is above the tolerance " + std::to_string(congruence_tolerance));
   if(m.self_intersecting_face_pairs > 0)
@@ -215,7 +245,14 @@ inline std::vector<Tile> tile_catalog(const Tilability_measure& m)
     tiles[c].corners = m.s_quads[c];
     tiles[c].worst_deviation = m.cluster_congruence_errors[c] * m.mean_edge_length;
     tiles[c].mold = c < m.cluster_molds.size() ? m.cluster_molds[c] : c;
+    tiles[c].panel_tolerance = m.panel_tolerance;
   }
+  for(std::size_t f = 0; f < m.panel_clusters.size() && f < m.panel_deviations.size(); ++f)
+    if(m.panel_clusters[f] < tiles.size())
+    {
+      tiles[m.panel_clusters[f]].instance_faces.push_back(f);
+      tiles[m.panel_clusters[f]].instance_deviations.push_back(m.panel_deviations[f]);
+    }
   return tiles;
 }
 
@@ -240,9 +277,11 @@ inline std::size_t flattened_panels(const Tilable_problem& problem, const Point_
 // The measurements on arrays; `D` is the fairness operator of the mesh.
 inline Tilability_measure measure_tilability(const Tilable_problem& problem,
                                              const Eigen::SparseMatrix<double>& D,
-                                             const Point_matrix& input, const Point_matrix& result)
+                                             const Point_matrix& input, const Point_matrix& result,
+                                             double panel_tolerance = defaults::panel_tolerance)
 {
   Tilability_measure m;
+  m.panel_tolerance = panel_tolerance;
   m.number_of_clusters = problem.number_of_clusters;
   m.degree_of_flexibility = problem.degree_of_flexibility;
 
@@ -253,6 +292,10 @@ inline Tilability_measure measure_tilability(const Tilable_problem& problem,
   m.requires_planar_tiles = problem.planar;
   m.cluster_mirrored_counts = congruence.mirrored;
   m.s_quads = congruence.s_quads;
+  m.panel_deviations = congruence.face_errors;
+  m.panel_clusters = problem.face_cluster;
+  for(double e : congruence.face_errors)
+    m.worst_panel_deviation = (std::max)(m.worst_panel_deviation, e);
   for(double e : congruence.errors)
   {
     m.cluster_congruence_errors.push_back(e / m.mean_edge_length);
@@ -297,6 +340,34 @@ inline Tilability_measure measure_tilability(const Tilable_problem& problem,
   return m;
 }
 
+// Per face of the problem of `pm` and `np` (by the index of np's face index
+// map), the mesh's own face index: the steps of K_set_tilable_surface index
+// the faces in a canonical order, the user by the mesh's.
+template <typename PolygonMesh, typename NamedParameters>
+std::vector<std::size_t> mesh_face_indices(const PolygonMesh& pm, const NamedParameters& np)
+{
+  const auto fim = CGAL::get_initialized_face_index_map(pm, np);
+  const auto own = CGAL::get_initialized_face_index_map(pm);
+  std::vector<std::size_t> index(num_faces(pm));
+  for(auto f : faces(pm)) index[std::size_t(get(fim, f))] = std::size_t(get(own, f));
+  return index;
+}
+
+// The per-face entries of `m`, by problem face, put by the mesh's own face
+// index (`mesh_face_indices()`).
+inline void use_mesh_face_order(Tilability_measure& m, const std::vector<std::size_t>& index)
+{
+  std::vector<double> deviations(m.panel_deviations.size());
+  std::vector<std::size_t> clusters(m.panel_clusters.size());
+  for(std::size_t i = 0; i < index.size() && i < deviations.size() && i < clusters.size(); ++i)
+  {
+    deviations[index[i]] = m.panel_deviations[i];
+    clusters[index[i]] = m.panel_clusters[i];
+  }
+  m.panel_deviations = std::move(deviations);
+  m.panel_clusters = std::move(clusters);
+}
+
 // measure_tilability() on meshes validate_panel_mesh() accepted, with the
 // same numbers of vertices and faces.
 template <typename PolygonMesh, typename NamedParameters, typename InputNamedParameters>
@@ -309,7 +380,9 @@ Tilability_measure measure_tilability(Validated_mesh, const PolygonMesh& result,
     internal::const_vertex_point_map(input, np_input),
     CGAL::get_initialized_vertex_index_map(input, np_input));
   const Eigen::SparseMatrix<double> D = fairness_operator(result, input_points, np);
-  return measure_tilability(problem, D, input_points, problem.points);
+  Tilability_measure m = measure_tilability(problem, D, input_points, problem.points, panel_tolerance_of(np));
+  use_mesh_face_order(m, mesh_face_indices(result, np));
+  return m;
 }
 
 } // namespace internal
@@ -333,6 +406,10 @@ Tilability_measure measure_tilability(Validated_mesh, const PolygonMesh& result,
 ///     `PROPER_RIGID_MOTIONS` \cgalParamNEnd
 ///   \cgalParamNBegin{feature_angle} dihedral angle in degrees above which an
 ///     edge of `input` is a sharp feature, for F_f; default 60 \cgalParamNEnd
+///   \cgalParamNBegin{panel_tolerance} recorded in the measure
+///     (`Tilability_measure::panel_tolerance`), in model units: the result is
+///     certified within it by `Tilability_measure::within_panel_tolerance()`;
+///     default 0 \cgalParamNEnd
 ///   \cgalParamNBegin{edge_is_constrained_map} feature edges, replacing the
 ///     detection by angle \cgalParamNEnd
 /// \cgalNamedParamsEnd
@@ -342,12 +419,13 @@ Tilability_measure measure_tilability(Validated_mesh, const PolygonMesh& result,
 /// \cgalNamedParamsEnd
 ///
 /// \throws Invalid_input if a mesh is not a valid quad mesh, if the meshes do
-/// not have the same numbers of vertices and faces, or if a cluster or an
-/// orientation is out of range.
+/// not have the same numbers of vertices and faces, if a cluster or an
+/// orientation is out of range, or if `panel_tolerance` is negative or not finite.
 template <typename PolygonMesh, typename NamedParameters, typename InputNamedParameters>
 Tilability_measure measure_tilability(const PolygonMesh& result, const PolygonMesh& input,
                                       const NamedParameters& np, const InputNamedParameters& np_input)
 {
+  internal::panel_tolerance_of(np);
   validate_panel_mesh(result, np);
   validate_panel_mesh(input, np_input);
   if(num_vertices(result) != num_vertices(input) || num_faces(result) != num_faces(input))

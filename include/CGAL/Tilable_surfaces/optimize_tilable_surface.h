@@ -17,6 +17,8 @@
 #include <CGAL/Tilable_surfaces/internal/Optimization/constrained_gauss_newton.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/displacement_estimate.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/fairness_operator.h>
+#include <CGAL/Tilable_surfaces/internal/panel_tolerance.h>
+#include <CGAL/Tilable_surfaces/internal/tuning.h>
 #include <CGAL/Tilable_surfaces/measure.h>
 #include <CGAL/Tilable_surfaces/named_parameters.h>
 #include <CGAL/Tilable_surfaces/validation.h>
@@ -112,6 +114,8 @@ struct Optimization_setup
   Tilable_problem problem;
   Solver_type solver = CONSTRAINED_GAUSS_NEWTON;
   Solver_settings settings;
+  double panel_tolerance = 0; // model units; 0: exact mode
+  std::vector<std::size_t> mesh_face_index; // per problem face (mesh_face_indices())
   std::vector<bool> fixed;
   Eigen::RowVector3d centre;
   double scale = 1;
@@ -127,7 +131,9 @@ struct Optimization_setup
     namespace TS_np = CGAL::Tilable_surfaces::internal_np;
     typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
 
+    panel_tolerance = panel_tolerance_of(np);
     problem = make_tilable_problem(pm, np);
+    mesh_face_index = mesh_face_indices(pm, np);
     solver = choose_parameter(get_parameter(np, TS_np::solver), defaults::solver);
     const bool gauss_newton = (solver == CONSTRAINED_GAUSS_NEWTON);
     settings.weights.distance =
@@ -162,6 +168,8 @@ struct Optimization_setup
     check_parameter(gauss_newton || !problem.planar,
                     "planar_tiles needs the default solver (CONSTRAINED_GAUSS_NEWTON)");
     check_parameter(tangential > 0 && tangential <= 1, "tangential_weight must be in (0, 1]");
+    if(panel_tolerance > 0)
+      hold_to_panel_tolerance();
 
     const auto vim = CGAL::get_initialized_vertex_index_map(pm, np);
     const auto vcm = choose_parameter(get_parameter(np, CGAL::internal_np::vertex_is_constrained),
@@ -181,6 +189,18 @@ struct Optimization_setup
   }
 
   Solver_input input() const { return Solver_input{problem, D, X0, fixed, metric}; }
+
+private:
+  // A panel tolerance replaces congruence_tolerance: the solvers' error is
+  // relative to the mean edge, T absolute, so they aim at a share of T over
+  // the input's mean edge (tuning::panel_tolerance_solver_share) and
+  // measure_result() certifies T itself.
+  void hold_to_panel_tolerance()
+  {
+    const double ell = mean_edge_length(problem, problem.points);
+    settings.congruence_tolerance = tuning::panel_tolerance_solver_share * panel_tolerance / ell;
+    settings.within_tolerance_suffices = true;
+  }
 };
 
 // The positions `start` (by vertex index, in mesh units) normalized like the
@@ -212,9 +232,12 @@ inline void measure_result(const Optimization_setup& setup, const Point_matrix& 
 {
   const Tilable_problem& problem = setup.problem;
   const double tolerance = setup.settings.congruence_tolerance;
-  result.measure = measure_tilability(problem, setup.D, problem.points, moved_points(setup, Y));
-  result.converged = result.measure.congruence_error <= tolerance &&
-                     (!problem.planar || result.measure.planarity_error <= tolerance);
+  result.measure = measure_tilability(problem, setup.D, problem.points, moved_points(setup, Y), setup.panel_tolerance);
+  use_mesh_face_order(result.measure, setup.mesh_face_index);
+  result.converged = setup.panel_tolerance > 0
+                       ? result.measure.within_panel_tolerance()
+                       : result.measure.congruence_error <= tolerance &&
+                           (!problem.planar || result.measure.planarity_error <= tolerance);
 }
 
 // Measures the solver's result X; with `compare_with_start`, also the exact
@@ -359,6 +382,12 @@ Optimization_result optimize_tilable_surface(Validated_mesh, PolygonMesh& pm, co
 ///   \cgalParamNBegin{diagonal_weight} mu4, default 1 (conjugate gradient only) \cgalParamNEnd
 ///   \cgalParamNBegin{volume_weight} mu5, default 1 (conjugate gradient only) \cgalParamNEnd
 ///   \cgalParamNBegin{congruence_tolerance} target congruence error, default 1e-6 \cgalParamNEnd
+///   \cgalParamNBegin{panel_tolerance} T in model units: every instance
+///     within T of its mold (largest corner distance after the best rigid
+///     fit) suffices, replacing `congruence_tolerance`; the default solver
+///     leaves a start already within T unmoved, and pulls its result back
+///     toward the input while it stays within T; a finite length >= 0,
+///     default 0 (exact mode) \cgalParamNEnd
 ///   \cgalParamNBegin{convergence_tolerance} Gauss-Newton: stop once congruent
 ///     and the largest step is below this fraction of the mean edge length,
 ///     default 1e-9; conjugate gradient: stop when the relative decrease of

@@ -65,6 +65,18 @@ inline nlohmann::json fidelity_json(const Tilability_measure& m)
           {"self_intersecting_face_pairs", m.self_intersecting_face_pairs}};
 }
 
+// The "panel_deviation" entry of tilability_report_json(): every panel's
+// deviation from its mold in model units, the worst, and the panel tolerance
+// they are held to (0: exact mode, see "congruence_error").
+inline nlohmann::json panel_deviation_json(const Tilability_measure& m)
+{
+  return {{"tolerance", m.panel_tolerance},
+          {"worst", m.worst_panel_deviation},
+          {"within_tolerance", m.within_panel_tolerance()},
+          {"per_face", m.panel_deviations},
+          {"length_scale", "model units"}};
+}
+
 // The "clustering" entry of tilability_report_json().
 inline nlohmann::json clustering_json(const K_set_tilable_result& r)
 {
@@ -98,7 +110,8 @@ inline nlohmann::json time_json(const K_set_tilable_result& r)
 /// diagonals of a face, whether mirrored panels were allowed and how many
 /// each cluster has,
 /// congruence error (worst and per cluster, relative to the mean edge length,
-/// and the tolerance it was held to), the distances between the result and
+/// and the tolerance it was held to), every panel's deviation from its mold
+/// in model units with the worst and the panel tolerance (`panel_deviation`), the distances between the result and
 /// the input both ways and the symmetric Hausdorff distance (max and mean,
 /// relative to the input's bounding-box diagonal and in its mean edge lengths),
 /// displacement (mesh units), the paper's normalized terms, solver
@@ -141,9 +154,10 @@ inline nlohmann::json tilability_report_json(const K_set_tilable_result& r,
     {"congruence_error",
      {{"worst", m.congruence_error},
       {"per_cluster", m.cluster_congruence_errors},
-      {"tolerance", congruence_tolerance},
+      {"tolerance", m.panel_tolerance > 0 ? m.panel_tolerance / m.mean_edge_length : congruence_tolerance},
       {"length_scale", "mean edge length"},
       {"mean_edge_length", m.mean_edge_length}}},
+    {"panel_deviation", internal::panel_deviation_json(m)},
     {"fidelity", internal::fidelity_json(m)},
     {"displacement", {{"max", m.max_displacement}, {"mean", m.mean_displacement}}},
     {"normalized_terms", energy_terms_json(m.normalized_terms)},

@@ -135,7 +135,10 @@ inline nlohmann::json tile_catalog_json(const std::vector<Tile>& tiles)
                        {"signed_volume", r.signed_volume},
                        {"planarity", r.planarity},
                        {"planar", r.is_planar},
-                       {"worst_deviation", t.worst_deviation}});
+                       {"worst_deviation", t.worst_deviation},
+                       {"panel_tolerance", t.panel_tolerance},
+                       {"instance_faces", t.instance_faces},
+                       {"instance_deviations", t.instance_deviations}});
   }
   return catalog;
 }

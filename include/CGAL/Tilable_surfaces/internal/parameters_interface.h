@@ -34,6 +34,7 @@ CGAL_TS_add_named_parameter(volume_weight_t, volume_weight, volume_weight)
 // optimization: solver and tolerances
 CGAL_TS_add_named_parameter(solver_t, solver, solver)
 CGAL_TS_add_named_parameter(congruence_tolerance_t, congruence_tolerance, congruence_tolerance)
+CGAL_TS_add_named_parameter(panel_tolerance_t, panel_tolerance, panel_tolerance)
 CGAL_TS_add_named_parameter(convergence_tolerance_t, convergence_tolerance, convergence_tolerance)
 CGAL_TS_add_named_parameter(feature_angle_t, feature_angle, feature_angle)
 CGAL_TS_add_named_parameter(tangential_weight_t, tangential_weight, tangential_weight)

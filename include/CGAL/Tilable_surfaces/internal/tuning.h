@@ -59,6 +59,16 @@ constexpr double multiplier_accuracy = 1e-3;
 // The congruence error is measured for the visitor every so many iterations:
 // a Procrustes fit per cluster is too dear for every one.
 constexpr int sqp_measure_period = 10;
+// Bisections of the pull back toward the input within a panel tolerance
+// (pull_back_toward_input()): each costs one congruence measurement, and 10
+// place the result within 1e-3 of the move's length from the boundary of
+// the tolerance along that line.
+constexpr int pull_back_bisections = 10;
+// The share of the panel tolerance the solvers aim at: their congruence
+// error is relative to the mean edge of the current positions, the
+// certificate is absolute, and a result whose edges grew by up to
+// 1 / this factor stays within the tolerance.
+constexpr double panel_tolerance_solver_share = 0.9;
 // Starting trust region on the largest vertex move, in mean edge lengths: far
 // from a solution a full step can fold the mesh.
 constexpr double sqp_initial_radius = 0.5;

@@ -74,6 +74,7 @@ struct Clustering_settings
   std::size_t exact_limit;
   Orientation_policy policy;
   unsigned int seed;
+  double panel_tolerance = 0; // panel_tolerance, model units; 0: exact mode
   // Set by K_set_tilable_surface::cluster() when an exact sweep would end
   // its search (above large_mesh_faces, no other candidate to optimize):
   // whether the sweep clustering (by canonical index) has an exact start.

@@ -20,6 +20,7 @@
 #include <CGAL/Tilable_surfaces/internal/Clustering/segment_candidates.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/strip_generator.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/sweep_candidates.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/tolerance_candidates.h>
 
 namespace CGAL {
 namespace Tilable_surfaces {
@@ -45,8 +46,11 @@ namespace Tilable_surfaces {
 /// `PATCH_SEGMENTS`: on a quad mesh that is not one grid, the grid segments
 /// of every patch of its quad layout, with molds shared across patches whose
 /// panels agree, never mixing quads twisted both ways.
+/// `TOLERANCE_GROUPS`: with a `panel_tolerance`, the panels that already fit
+/// one mold within it grouped, when at most K groups are needed (user
+/// manual, section TS_Panel_tolerance).
 enum Candidate_origins::Origin : int {
-  HIERARCHICAL, KMEANS, QUAD_STRIPS, GRID_SEGMENTS, GRID_SWEEPS, TWIST_SEPARATED, PATCH_SEGMENTS
+  HIERARCHICAL, KMEANS, QUAD_STRIPS, GRID_SEGMENTS, GRID_SWEEPS, TWIST_SEPARATED, PATCH_SEGMENTS, TOLERANCE_GROUPS
 };
 
 namespace internal {
@@ -62,7 +66,8 @@ inline const Candidate_origin_traits& origin_traits(Candidate_origins::Origin or
     {"grid-segment", true, false, tuning::grid_segment_extra_quota_divisor, true},
     {"sweep", false, true, 0, false},
     {"twist-separated", true, false, tuning::twist_separated_extra_quota_divisor, false},
-    {"patch-segment", true, false, tuning::patch_segment_extra_quota_divisor, true}};
+    {"patch-segment", true, false, tuning::patch_segment_extra_quota_divisor, true},
+    {"tolerance-group", true, false, 0, true}};
   return traits[origin];
 }
 
@@ -82,7 +87,7 @@ typedef Generator_list<Hierarchical_generator> Merge_generators;
 
 // Step 4: the other candidates, pooled in this order.
 typedef Generator_list<Kmeans_generator, Quad_strip_generator, Grid_segment_generator,
-                       Split_segment_generator, Patch_segment_generator>
+                       Split_segment_generator, Patch_segment_generator, Tolerance_group_generator>
   Other_generators;
 
 } // namespace internal

@@ -45,20 +45,26 @@ struct Cluster_congruence
   std::vector<std::size_t> sizes;  // instances per cluster
   std::vector<double> errors;      // absolute lengths
   std::vector<std::size_t> mirrored; // instances whose best fit is a mirror
+  std::vector<double> face_errors;   // per face: its instance's deviation, absolute
 };
 
 inline Cluster_congruence cluster_congruence(const Tilable_problem& problem, const Point_matrix& X)
 {
   const std::size_t K = problem.number_of_clusters;
   std::vector<std::vector<Panel>> members(K);
+  std::vector<std::vector<std::size_t>> faces(K);
   for(std::size_t f = 0; f < problem.face_corners.size(); ++f)
+  {
     members[problem.face_cluster[f]].push_back(instance(problem, X, f));
+    faces[problem.face_cluster[f]].push_back(f);
+  }
 
   Cluster_congruence result;
   result.s_quads.assign(K, Panel::zero(4));
   result.errors.assign(K, 0.0);
   result.sizes.assign(K, 0);
   result.mirrored.assign(K, 0);
+  result.face_errors.assign(problem.face_corners.size(), 0.0);
   for(std::size_t c = 0; c < K; ++c)
   {
     result.sizes[c] = members[c].size();
@@ -69,9 +75,12 @@ inline Cluster_congruence cluster_congruence(const Tilable_problem& problem, con
     // The mold of a planar S-quad is its own mirror image.
     const bool count_mirrored = problem.allow_mirror &&
                                 planarity_defect(mean) > tuning::planar_mold_defect * (mean[2] - mean[0]).norm();
-    for(const Panel& q : members[c])
+    for(std::size_t i = 0; i < members[c].size(); ++i)
     {
-      result.errors[c] = (std::max)(result.errors[c], rigid_fit_deviation(mean, q, problem.allow_mirror));
+      const Panel& q = members[c][i];
+      const double deviation = rigid_fit_deviation(mean, q, problem.allow_mirror);
+      result.face_errors[faces[c][i]] = deviation;
+      result.errors[c] = (std::max)(result.errors[c], deviation);
       if(count_mirrored && best_rigid_fit(mean, q, true).is_mirrored)
         ++result.mirrored[c];
     }

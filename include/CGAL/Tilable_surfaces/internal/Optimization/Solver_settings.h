@@ -27,6 +27,10 @@ struct Solver_settings
   Energy_terms weights;             // mu1..mu5
   int max_iterations = default_number_of_iterations(defaults::solver);
   double congruence_tolerance = defaults::congruence_tolerance;
+  // With a panel tolerance (panel_tolerance.h) the default solver does not
+  // move a start already within congruence_tolerance, and pulls its
+  // converged result back toward the input while it stays within it.
+  bool within_tolerance_suffices = false;
   double convergence_tolerance = default_convergence_tolerance(defaults::solver);
 };
 

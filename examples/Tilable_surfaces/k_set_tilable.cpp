@@ -143,9 +143,9 @@ void check_panel_tolerance(const po::variables_map& vm, const Options& o)
     throw Usage_error("--panel-tolerance-relative must be a finite fraction >= 0 of the mean edge length");
 }
 
-Options parse(int argc, char** argv, bool& help)
+// The options shown by --help, writing into `o`.
+po::options_description visible_options(Options& o)
 {
-  Options o;
   po::options_description visible(
     "Usage: k_set_tilable INPUT -k K -o OUTPUT.ply [options]\n"
     "       k_set_tilable INPUT --max-deviation D [-k KMAX] -o OUTPUT.ply [options]\n"
@@ -219,30 +219,12 @@ Options parse(int argc, char** argv, bool& help)
      "the same T as a fraction of the input's mean edge length (1e-3: a millimetre on 1 m panels)")
     ("ascii", po::bool_switch(&o.ascii), "ASCII PLY instead of binary")
     ("quiet,q", po::bool_switch(&o.quiet), "no progress on stderr");
-  po::options_description hidden;
-  hidden.add_options()("input", po::value<std::string>(&o.input)->required(), "input mesh");
-  po::options_description all;
-  all.add(visible).add(hidden);
-  po::positional_options_description positional;
-  positional.add("input", 1);
+  return visible;
+}
 
-  po::variables_map vm;
-  try
-  {
-    po::store(po::command_line_parser(argc, argv).options(all).positional(positional).run(), vm);
-    if(vm.count("help"))
-    {
-      help = true;
-      std::cout << visible << "\n";
-      return o;
-    }
-    po::notify(vm);
-  }
-  catch(const po::error& e)
-  {
-    throw Usage_error(e.what());
-  }
-
+// What the command does (-k, --max-deviation or --sweep) and the files it writes, checked.
+void check_mode(const po::variables_map& vm, Options& o)
+{
   if(vm.count("k") && o.k < 1)
     throw Usage_error("-k must be at least 1, got " + std::to_string(o.k));
   if(vm.count("max-deviation") && !(o.max_deviation >= 0))
@@ -272,8 +254,11 @@ Options parse(int argc, char** argv, bool& help)
     throw Usage_error("the curve '" + o.curve + "' must end in .csv");
   if(!o.html.empty() && extension(o.html) != "html" && extension(o.html) != "htm")
     throw Usage_error("the HTML report '" + o.html + "' must end in .html or .htm");
-  if(!o.sweep.empty())
-    return o;
+}
+
+// The files and values of a run that writes a mesh, checked.
+void check_run_options(const po::variables_map& vm, const Options& o)
+{
   const std::string out_ext = extension(o.output);
   if(out_ext != "ply" && out_ext != "off" && out_ext != "obj")
     throw Usage_error("the output '" + o.output + "' must end in .ply, .off or .obj");
@@ -302,6 +287,39 @@ Options parse(int argc, char** argv, bool& help)
   if((vm.count("optimized-candidates") && o.optimized_candidates < 0) || o.improvement_rounds < 0)
     throw Usage_error("--optimized-candidates and --improvement-rounds must be >= 0");
   check_panel_tolerance(vm, o);
+}
+
+Options parse(int argc, char** argv, bool& help)
+{
+  Options o;
+  const po::options_description visible = visible_options(o);
+  po::options_description hidden;
+  hidden.add_options()("input", po::value<std::string>(&o.input)->required(), "input mesh");
+  po::options_description all;
+  all.add(visible).add(hidden);
+  po::positional_options_description positional;
+  positional.add("input", 1);
+
+  po::variables_map vm;
+  try
+  {
+    po::store(po::command_line_parser(argc, argv).options(all).positional(positional).run(), vm);
+    if(vm.count("help"))
+    {
+      help = true;
+      std::cout << visible << "\n";
+      return o;
+    }
+    po::notify(vm);
+  }
+  catch(const po::error& e)
+  {
+    throw Usage_error(e.what());
+  }
+
+  check_mode(vm, o);
+  if(o.sweep.empty())
+    check_run_options(vm, o);
   return o;
 }
 

@@ -2,8 +2,11 @@
 # prefix under WORK_DIR, configures and builds the consumer project against
 # that prefix only, and runs its program on MESH with K tiles.
 #
-#   cmake -DBUILD_DIR=... -DWORK_DIR=... -DMESH=... -DK=... -P install_and_consume.cmake
-foreach(variable BUILD_DIR WORK_DIR MESH K)
+#   cmake -DBUILD_DIR=... -DWORK_DIR=... -DMESH=... -DK=... -DCXX_FLAGS_RELEASE=...
+#         -P install_and_consume.cmake
+# CXX_FLAGS_RELEASE: the testsuite's Release flags, so that the consumer is
+# compiled as the tests are.
+foreach(variable BUILD_DIR WORK_DIR MESH K CXX_FLAGS_RELEASE)
   if(NOT DEFINED ${variable})
     message(FATAL_ERROR "install_and_consume.cmake: -D${variable}=... is required")
   endif()
@@ -35,7 +38,7 @@ endforeach()
 # The consumer must see the installed package only: no package registry, and
 # the source tree's headers are not on its include path (checked below).
 run_step("configure the consumer" ${CMAKE_COMMAND} -S ${CMAKE_CURRENT_LIST_DIR} -B ${consumer_build}
-         -DCMAKE_BUILD_TYPE=Release -DCMAKE_PREFIX_PATH=${prefix}
+         -DCMAKE_BUILD_TYPE=Release "-DCMAKE_CXX_FLAGS_RELEASE=${CXX_FLAGS_RELEASE}" -DCMAKE_PREFIX_PATH=${prefix}
          -DCMAKE_FIND_USE_PACKAGE_REGISTRY=OFF -DCMAKE_EXPORT_COMPILE_COMMANDS=ON)
 file(READ ${consumer_build}/CMakeCache.txt cache)
 string(REGEX MATCH "Tilable_surfaces_DIR:PATH=([^\n]*)" _ "${cache}")

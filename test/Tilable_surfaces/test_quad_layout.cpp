@@ -275,7 +275,9 @@ TEST(QuadLayout, TriangleIsItsOwnPatch)
     const bool triangle = degree(Face(Mesh::size_type(faces[p][0])), m) == 3;
     EXPECT_EQ(layout.grids[p].rows == 0, triangle);
     if(triangle)
+    {
       EXPECT_EQ(faces[p].size(), 1u);
+    }
   }
   EXPECT_NE(layout.patch_of_face[5], layout.patch_of_face[6]);  // the two triangles
 }

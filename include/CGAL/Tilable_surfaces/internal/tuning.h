@@ -198,8 +198,8 @@ constexpr std::size_t split_segment_candidates = 4;
 // the ranked ones (origin_traits()): grids gain from their structure more
 // than the prediction ranks.
 constexpr std::size_t grid_segment_extra_quota_divisor = 4;
-// Twist separation (twist_separation.h) and patch-segment candidates
-// (patch_candidates.h): a cluster mixes twists when some
+// The twist-sign rule (twist_sign.h) of the twist separation and the
+// patch-segment candidates: a cluster mixes twists when some
 // of its quads twist beyond this fraction of its largest twist one way and
 // some the other way...
 constexpr double twist_sign_fraction = 0.05;

@@ -13,10 +13,9 @@
 //    molds of least spread (Run_partitions), for every m.
 // 2. M molds in all are spread over the patches by that spread: one each,
 //    then each further mold where it lowers the spread most per mold.
-// 3. A cluster whose quads are twisted both ways (signed volume
-//    det[t1 - t0, t2 - t0, t3 - t0] in the labelling of its S-quad, the one
-//    the optimization pairs corners by, of opposite signs, both above
-//    tuning::twist_sign_fraction of the largest) is split by sign:
+// 3. A cluster whose quads are twisted both ways (relative twists in the
+//    labelling of its S-quad, the one the optimization pairs corners by, of
+//    opposite signs, both significant: twist_sign.h) is split by sign:
 //    such quads can only become congruent by flattening.
 // 4. The clusters are merged across patches, least increase of the spread
 //    of their six corner distances first (Ward's criterion, each pair in its
@@ -28,6 +27,7 @@
 
 #include <CGAL/Tilable_surfaces/internal/Clustering/segment_candidates.h>
 #include <CGAL/Tilable_surfaces/internal/Shape_analysis/quad_layout.h>
+#include <CGAL/Tilable_surfaces/internal/Shape_analysis/twist_sign.h>
 #include <CGAL/Tilable_surfaces/internal/tuning.h>
 
 #include <CGAL/Random.h>
@@ -55,30 +55,19 @@ struct Mold_sum
 {
   std::size_t count = 0;
   Eigen::Matrix<double, 6, 1> distances = Eigen::Matrix<double, 6, 1>::Zero();
-  double positive_twist = 0, negative_twist = 0;  // largest signed volume of each sign, as magnitudes
+  double positive_twist = 0, negative_twist = 0;  // largest relative twist of each sign, as magnitudes
 
   void add(const Panel& q)
   {
     ++count;
     distances += corner_distances(q);
-    const double twist = 6 * signed_volume(q);
+    const double twist = relative_twist(q);
     double& largest = twist > 0 ? positive_twist : negative_twist;
     largest = (std::max)(largest, std::abs(twist));
   }
-  // The least twist (6 x signed volume) that counts as a sign:
-  // tuning::twist_sign_fraction of the largest, and at least a flat quad's
-  // (tuning::planar_twist, relative to the cube of the mean edge).
-  double significant_twist() const
-  {
-    const double edge = distances.head<4>().sum() / double(4 * count);
-    return (std::max)(tuning::twist_sign_fraction * (std::max)(positive_twist, negative_twist),
-                      tuning::planar_twist * edge * edge * edge);
-  }
-  // Both signs significant: a mix that only flattening makes congruent.
-  bool mixes_twists() const
-  {
-    return positive_twist > significant_twist() && negative_twist > significant_twist();
-  }
+  // Both signs significant (twists_oppose()): a mix that only flattening
+  // makes congruent.
+  bool mixes_twists() const { return twists_oppose(positive_twist, -negative_twist); }
   // With `other` in this labelling, `other` matched with orientation o.
   Mold_sum merged(const Mold_sum& other, Panel_orientation o) const
   {
@@ -280,9 +269,8 @@ private:
       const Mold_sum& s = sum[label[f]];
       if(!s.mixes_twists())
         continue;
-      const double twist = signed_volume(labelled[f]);
       const double larger = s.positive_twist >= s.negative_twist ? 1 : -1;
-      if(twist * larger < -s.significant_twist())
+      if(relative_twist(labelled[f]) * larger < -significant_twist((std::max)(s.positive_twist, s.negative_twist)))
       {
         if(opposite[label[f]] == no_index())
           opposite[label[f]] = next++;

@@ -21,6 +21,7 @@
 #include <CGAL/Tilable_surfaces/internal/Clustering/s_quad_template.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/strip_candidates.h>
 #include <CGAL/Tilable_surfaces/internal/Face_clustering.h>
+#include <CGAL/Tilable_surfaces/internal/Shape_analysis/twist_sign.h>
 #include <CGAL/Tilable_surfaces/internal/tuning.h>
 
 #include <algorithm>
@@ -32,16 +33,6 @@
 namespace CGAL {
 namespace Tilable_surfaces {
 namespace internal {
-
-// Whether twists `a` and `b` (relative_twist()) have opposite signs, both
-// beyond `tuning::twist_sign_fraction` of the larger magnitude and beyond
-// the planar level `tuning::planar_twist`.
-inline bool twists_oppose(double a, double b)
-{
-  const double significant =
-    (std::max)(tuning::planar_twist, tuning::twist_sign_fraction * (std::max)(std::abs(a), std::abs(b)));
-  return (a > significant && b < -significant) || (a < -significant && b > significant);
-}
 
 class Twist_separation
 {

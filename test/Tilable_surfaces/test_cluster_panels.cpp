@@ -744,4 +744,50 @@ TEST(ClusterQuads, RandomSeedDrawsTheKMeansStart)
   EXPECT_GT(distinct.size(), 1u);
 }
 
+
+// face_index_map numbers the faces for the package: the clustering does not
+// depend on the numbering (faces are put in a canonical order first), so a
+// reversed numbering gives the same partition of the faces; a map that gives
+// two faces one index is refused before it is used, the mesh untouched.
+TEST(ClusterQuads, TheUsersFaceIndexMapNumbersTheFaces)
+{
+  Mesh m = read("monkey_saddle");
+  const std::size_t n = m.number_of_faces();
+  auto reversed = m.add_property_map<Face, std::size_t>("f:reversed_index").first;
+  auto repeated = m.add_property_map<Face, std::size_t>("f:repeated_index").first;
+  for(Face f : faces(m))
+  {
+    put(reversed, f, n - 1 - std::size_t(f));
+    put(repeated, f, std::size_t(f) == 1 ? 0 : std::size_t(f));
+  }
+  Maps mp = maps(m);
+  const auto labels = [&](const auto& np) {
+    TS::cluster_panels(m, np.face_cluster_map(mp.cluster).face_orientation_map(mp.orientation));
+    std::vector<std::size_t> l;
+    for(Face f : faces(m)) l.push_back(get(mp.cluster, f));
+    return l;
+  };
+  const std::vector<std::size_t> own = labels(at_six()), by_reversed = labels(at_six().face_index_map(reversed));
+  ASSERT_EQ(std::set<std::size_t>(own.begin(), own.end()).size(), 6u);
+  for(std::size_t a = 0; a < n; ++a)
+    for(std::size_t b = a + 1; b < n; ++b)
+      ASSERT_EQ(own[a] == own[b], by_reversed[a] == by_reversed[b]) << "faces " << a << " and " << b;
+
+  const std::vector<std::size_t> before = labels(at_six());
+  const Mesh input = m;
+  try
+  {
+    labels(at_six().face_index_map(repeated));
+    ADD_FAILURE() << "a face index map that repeats an index was accepted";
+  }
+  catch(const TS::Invalid_input& e)
+  {
+    EXPECT_NE(std::string(e.what()).find("face indices are not 0..n-1"), std::string::npos) << e.what();
+  }
+  std::vector<std::size_t> after;
+  for(Face f : faces(m)) after.push_back(get(mp.cluster, f));
+  EXPECT_EQ(after, before);
+  for(auto v : vertices(m)) EXPECT_EQ(m.point(v), input.point(v));
+}
+
 } // namespace test_cluster_panels_unit

@@ -13,7 +13,7 @@
 //    molds of least spread (Run_partitions), for every m.
 // 2. M molds in all are spread over the patches by that spread: one each,
 //    then each further mold where it lowers the spread most per mold.
-// 3. A cluster whose quads are twisted both ways (relative twists in the
+// 3. A cluster whose quads are twisted both ways (signed volumes in the
 //    labelling of its S-quad, the one the optimization pairs corners by, of
 //    opposite signs, both significant: twist_sign.h) is split by sign:
 //    such quads can only become congruent by flattening.
@@ -55,19 +55,29 @@ struct Mold_sum
 {
   std::size_t count = 0;
   Eigen::Matrix<double, 6, 1> distances = Eigen::Matrix<double, 6, 1>::Zero();
-  double positive_twist = 0, negative_twist = 0;  // largest relative twist of each sign, as magnitudes
+  double positive_twist = 0, negative_twist = 0;  // largest 6 x signed volume of each sign, as magnitudes
 
   void add(const Panel& q)
   {
     ++count;
     distances += corner_distances(q);
-    const double twist = relative_twist(q);
+    const double twist = 6 * signed_volume(q);
     double& largest = twist > 0 ? positive_twist : negative_twist;
     largest = (std::max)(largest, std::abs(twist));
   }
+  // The twist of a quad of the mean edge planar as far as its mold is concerned.
+  double planar_twist() const
+  {
+    const double edge = distances.head<4>().sum() / double(4 * count);
+    return tuning::planar_twist * edge * edge * edge;
+  }
+  double significant_twist() const
+  {
+    return internal::significant_twist((std::max)(positive_twist, negative_twist), planar_twist());
+  }
   // Both signs significant (twists_oppose()): a mix that only flattening
   // makes congruent.
-  bool mixes_twists() const { return twists_oppose(positive_twist, -negative_twist); }
+  bool mixes_twists() const { return twists_oppose(positive_twist, -negative_twist, planar_twist()); }
   // With `other` in this labelling, `other` matched with orientation o.
   Mold_sum merged(const Mold_sum& other, Panel_orientation o) const
   {
@@ -256,8 +266,9 @@ private:
   }
 
   // Clusters that mix twist signs (Mold_sum::mixes_twists()) split by sign:
-  // the quads twisted against the larger sign, beyond the significance,
-  // form a cluster of their own.
+  // the quads twisted against the larger sign, beyond
+  // tuning::twist_split_margin times the significance, form a cluster of
+  // their own.
   // Whether any was split.
   static bool split_twists(std::vector<std::size_t>& label, const std::vector<Panel>& labelled)
   {
@@ -270,7 +281,7 @@ private:
       if(!s.mixes_twists())
         continue;
       const double larger = s.positive_twist >= s.negative_twist ? 1 : -1;
-      if(relative_twist(labelled[f]) * larger < -significant_twist((std::max)(s.positive_twist, s.negative_twist)))
+      if(6 * signed_volume(labelled[f]) * larger < -tuning::twist_split_margin * s.significant_twist())
       {
         if(opposite[label[f]] == no_index())
           opposite[label[f]] = next++;

@@ -17,19 +17,21 @@ namespace CGAL {
 namespace Tilable_surfaces {
 namespace internal {
 
-// The least relative twist (relative_twist()) that counts as a sign beside
-// twists up to `largest` in magnitude: tuning::twist_sign_fraction of it,
-// and at least the planar level tuning::planar_twist.
-inline double significant_twist(double largest)
+// The least twist that counts as a sign beside twists up to `largest` in
+// magnitude: tuning::twist_sign_fraction of it, and at least the twist of a
+// quad planar as far as its mold is concerned, `planar`
+// (tuning::planar_twist for relative twists, relative_twist(); that times
+// the cube of the mean edge for 6 x signed volumes).
+inline double significant_twist(double largest, double planar = tuning::planar_twist)
 {
-  return (std::max)(tuning::planar_twist, tuning::twist_sign_fraction * largest);
+  return (std::max)(planar, tuning::twist_sign_fraction * largest);
 }
 
-// Whether relative twists `a` and `b` have opposite signs, both significant
-// beside the larger magnitude.
-inline bool twists_oppose(double a, double b)
+// Whether twists `a` and `b` have opposite signs, both significant beside
+// the larger magnitude.
+inline bool twists_oppose(double a, double b, double planar = tuning::planar_twist)
 {
-  const double significant = significant_twist((std::max)(std::abs(a), std::abs(b)));
+  const double significant = significant_twist((std::max)(std::abs(a), std::abs(b)), planar);
   return (a > significant && b < -significant) || (a < -significant && b > significant);
 }
 

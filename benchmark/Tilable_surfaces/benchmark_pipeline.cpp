@@ -33,9 +33,10 @@
 // quads, a triangle 3 quads) up to --max-quads: a series of meshes that are
 // no grid, with its growth exponents.
 //
-// `--surface NAME` (repeatable) runs only the generated surfaces named.
+// `--surface NAME` (repeatable) runs only the generated surfaces named;
+// `--min-quads N` skips their sizes below N quads.
 //
-// Usage: benchmark_pipeline [--k K | --faces-per-mold N] [--max-quads N] [--budget SECONDS]
+// Usage: benchmark_pipeline [--k K | --faces-per-mold N] [--min-quads N] [--max-quads N] [--budget SECONDS]
 //                           [--surface NAME] [--subdivide L] [FILE ...]
 #include "benchmark_surfaces.h"
 
@@ -236,7 +237,7 @@ struct Series
 
 int main(int argc, char** argv)
 {
-  std::size_t k = 0, faces_per_mold = 0, max_quads = 100000;
+  std::size_t k = 0, faces_per_mold = 0, min_quads = 0, max_quads = 100000;
   int subdivisions = 0;
   double budget = 600;
   std::vector<std::string> files, surfaces;
@@ -247,6 +248,8 @@ int main(int argc, char** argv)
       k = std::stoul(argv[++i]);
     else if(i + 1 < argc && arg == "--faces-per-mold")
       faces_per_mold = std::stoul(argv[++i]);
+    else if(i + 1 < argc && arg == "--min-quads")
+      min_quads = std::stoul(argv[++i]);
     else if(i + 1 < argc && arg == "--max-quads")
       max_quads = std::stoul(argv[++i]);
     else if(i + 1 < argc && arg == "--budget")
@@ -257,7 +260,8 @@ int main(int argc, char** argv)
       subdivisions = std::stoi(argv[++i]);
     else if(arg.rfind("--", 0) == 0)
     {
-      std::cerr << "usage: benchmark_pipeline [--k K | --faces-per-mold N] [--max-quads N] [--budget SECONDS] "
+      std::cerr << "usage: benchmark_pipeline [--k K | --faces-per-mold N] [--min-quads N] [--max-quads N] "
+                   "[--budget SECONDS] "
                    "[--surface NAME] [--subdivide L] [FILE ...]\n";
       return EXIT_FAILURE;
     }
@@ -308,6 +312,8 @@ int main(int argc, char** argv)
       Mesh mesh = s.generate(n);
       if(mesh.number_of_faces() > max_quads)
         break;
+      if(mesh.number_of_faces() < min_quads)
+        continue;
       double seconds_taken = 0;
       if(run(s.name, mesh, tile_count(k, faces_per_mold, mesh.number_of_faces(), generated_tile_count), budget,
              seconds_taken))

@@ -52,15 +52,30 @@ std::vector<std::vector<std::size_t> > sweeps(const Mesh& m, std::size_t k)
                                 TS::PROPER_RIGID_MOTIONS);
 }
 
+// Whether a cluster of `label` (a tube of loops of `around` quads, face
+// i * around + j) is one whole loop: a coaxial transition row.
+bool has_loop_cluster(const std::vector<std::size_t>& label, int around)
+{
+  for(std::size_t first = 0; first < label.size(); first += std::size_t(around))
+    if(std::count(label.begin(), label.end(), label[first]) == around &&
+       std::count(label.begin() + std::ptrdiff_t(first), label.begin() + std::ptrdiff_t(first) + around,
+                  label[first]) == around)
+      return true;
+  return false;
+}
+
 // The sweeps of `m`, a tube of loops of `around` quads (face i * around + j),
 // whose rows are its loops: not those whose rows run along the tube and
 // close up around it (rotation sweeps), each of whose clusters holds whole
-// loops or lies within one.
-std::vector<std::vector<std::size_t> > loop_sweeps(const Mesh& m, std::size_t k, int around)
+// loops or lies within one. With `coaxial`, only the coaxial transition
+// sweeps (has_loop_cluster()), else only the others.
+std::vector<std::vector<std::size_t> > loop_sweeps(const Mesh& m, std::size_t k, int around, bool coaxial = false)
 {
   std::vector<std::vector<std::size_t> > result;
   for(const std::vector<std::size_t>& label : sweeps(m, k))
   {
+    if(has_loop_cluster(label, around) != coaxial)
+      continue;
     std::map<std::size_t, std::set<std::size_t> > loops;
     std::map<std::size_t, std::size_t> size;
     for(std::size_t f = 0; f < label.size(); ++f)
@@ -214,6 +229,41 @@ TEST(SweepStart, TransitionRowLetsTheSectionGrow)
   const double transition_distance = (start - input).rowwise().norm().maxCoeff();
   const double one_section_distance = (start_of(m, one_section) - input).rowwise().norm().maxCoeff();
   EXPECT_LT(transition_distance, 0.75 * one_section_distance);
+}
+
+// The horn's loops are circles, so with K = 19 (two rows of 8 column molds
+// and one more) it also has a coaxial transition sweep: two groups of loops,
+// each one run of 8 column molds, and between them one loop that is a
+// single mold, the 2 molds left splitting columns. At its start every
+// cluster is congruent (Umeyama, independently), the rings of each group
+// are congruent while the section grows across the transition loop, and
+// the start is closer to the horn (symmetric Hausdorff distance by CGAL's
+// sampling) than the one-section sweep with as many molds.
+TEST(SweepStart, CoaxialTransitionLoopIsOneMold)
+{
+  const Mesh m = growing_horn();
+  const std::vector<std::vector<std::size_t> > coaxial = loop_sweeps(m, 19, around, true);
+  ASSERT_EQ(coaxial.size(), 1u);
+  const std::vector<std::size_t>& label = coaxial[0];
+  EXPECT_EQ(std::set<std::size_t>(label.begin(), label.end()).size(), 19u);
+  int transition_row = -1;
+  for(int i = 0; i < rings; ++i)
+    if(std::count(label.begin() + i * around, label.begin() + (i + 1) * around, label[std::size_t(i * around)]) ==
+       around)
+      transition_row = i;
+  ASSERT_GE(transition_row, 2);
+  ASSERT_LE(transition_row, rings - 3);
+  const TSI::Point_matrix start = start_of(m, label);
+  ASSERT_EQ(start.rows(), rings * around + around);
+  Mesh moved = moved_to(m, start);
+  const Clustering c = clustered(moved, label);
+  EXPECT_LE(congruence_by_umeyama(moved, c.cluster, c.orientation), 1e-12);
+  EXPECT_LE(ring_fit(start, 0, transition_row), 1e-12);
+  EXPECT_LE(ring_fit(start, transition_row + 1, rings), 1e-12);
+  EXPECT_GT(ring_fit(start, 0, rings), 0.1);
+  const Mesh one_section = moved_to(m, start_of(m, loop_sweeps(m, 19, around).at(0)));
+  EXPECT_LT(hausdorff_oracle::distances(moved, m).hausdorff(),
+            0.75 * hausdorff_oracle::distances(one_section, m).hausdorff());
 }
 
 namespace {

@@ -275,6 +275,9 @@ constexpr double sweep_runs_work = 1e8;
 // among this many rows spread evenly (the dynamic program fits a sweep per
 // pair of them).
 constexpr std::size_t transition_row_choices = 64;
+// Coaxial transition sweeps: a ring farther from its regular polygon than
+// this many of its mean edge lengths is not round.
+constexpr double round_ring_deviation = 0.05;
 // Screw column runs: runs of at most sqrt(this / columns) columns, so that
 // the O(columns^3 / 8) search stays near this many steps.
 constexpr double screw_column_runs_work = 1e8;

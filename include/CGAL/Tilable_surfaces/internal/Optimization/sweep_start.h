@@ -18,12 +18,15 @@
 //   aligned with the input.
 // A row that is a run of its own has a mold per quad: the groups of runs it
 // separates are each built so, from a section of their own
-// (grouped_sweep_start()).
+// (grouped_sweep_start()). A row that is one mold on a tube of round section
+// joins groups swept from regular polygons on one axis
+// (coaxial_sweep_start()).
 
 #include <CGAL/Tilable_surfaces/internal/Clustering/sweep_candidates.h>
 #include <CGAL/Tilable_surfaces/internal/Tilable_problem.h>
 
 #include <Eigen/Geometry>
+
 
 #include <algorithm>
 #include <array>
@@ -182,6 +185,151 @@ inline Point_matrix grouped_sweep_start(const Point_matrix& points, const std::v
   return start;
 }
 
+// Whether the clusters of `label` on a full grid with the runs `run_of` lie
+// as coaxial_transition_sweep() makes them: every cluster in one run, and in
+// one column or a whole row, at least one a whole row.
+inline bool coaxial_transition_layout(const Quad_grid& grid, const std::vector<std::size_t>& label,
+                                      const std::vector<std::size_t>& run_of)
+{
+  const std::size_t columns = grid.columns;
+  const std::size_t k = *std::max_element(label.begin(), label.end()) + 1;
+  std::vector<std::size_t> row_of(k, no_index()), column_of(k, no_index()), count(k, 0);
+  std::vector<bool> one_row(k, true), one_column(k, true);
+  for(std::size_t r = 0; r < grid.rows; ++r)
+    for(std::size_t c = 0; c < columns; ++c)
+    {
+      const std::size_t l = grid_cell_label(grid, label, r, c);
+      if(l == no_index())
+        return false;
+      if(row_of[l] == no_index())
+      {
+        row_of[l] = r;
+        column_of[l] = c;
+      }
+      if(run_of[row_of[l]] != run_of[r])
+        return false;
+      one_row[l] = one_row[l] && row_of[l] == r;
+      one_column[l] = one_column[l] && column_of[l] == c;
+      ++count[l];
+    }
+  bool has_row = false;
+  for(std::size_t l = 0; l < k; ++l)
+  {
+    const bool whole_row = one_row[l] && count[l] == columns;
+    if(!one_column[l] && !whole_row)
+      return false;
+    has_row = has_row || whole_row;
+  }
+  return has_row;
+}
+
+// The rigid motion that puts the regular polygon `next` on the axis of
+// `previous`, `gap` farther along its normal, in a parallel plane and with
+// the same phase (the coaxial transition row, sweep_candidates.h).
+inline Eigen::Matrix4d coaxial_motion(const Regular_polygon& previous, const Regular_polygon& next, double gap)
+{
+  auto basis = [](const Regular_polygon& p) {
+    Eigen::Matrix3d b;
+    b << p.first, p.normal.cross(p.first), p.normal;
+    return b;
+  };
+  Eigen::Matrix4d m = Eigen::Matrix4d::Identity();
+  m.topLeftCorner<3, 3>() = basis(previous) * basis(next).transpose();
+  m.topRightCorner<3, 1>() = previous.center + gap * previous.normal - m.topLeftCorner<3, 3>() * next.center;
+  return m;
+}
+
+// The screw motion with the axis direction and the step along it of `m`
+// that turns `f` times as far per row, about an axis moved so that `center`
+// keeps its distance per row and its path's tangent: that path bent `f`
+// times as much. `m` when it hardly turns.
+inline Eigen::Matrix4d bent_motion(const Eigen::Matrix4d& m, const Eigen::Vector3d& center, double f)
+{
+  const Eigen::AngleAxisd turn(Eigen::Matrix3d(m.topLeftCorner<3, 3>()));
+  if(turn.angle() < tuning::screw_angle_min)
+    return m;
+  const Eigen::Vector3d a = turn.axis(), t = m.topRightCorner<3, 1>();
+  // A point of the axis: the least-squares solution of (I - R) o = t - (t.a) a.
+  const Eigen::Matrix3d i_minus_r = Eigen::Matrix3d::Identity() - m.topLeftCorner<3, 3>();
+  const Eigen::Vector3d o = i_minus_r.jacobiSvd(Eigen::ComputeFullU | Eigen::ComputeFullV).solve(t - t.dot(a) * a);
+  const Eigen::Vector3d v = (center - o) - (center - o).dot(a) * a;
+  const Eigen::Vector3d moved = o + (1 - 1 / f) * v;
+  Eigen::Matrix4d bent = Eigen::Matrix4d::Identity();
+  bent.topLeftCorner<3, 3>() = Eigen::AngleAxisd(turn.angle() * f, a).toRotationMatrix();
+  bent.topRightCorner<3, 1>() = moved - bent.topLeftCorner<3, 3>() * moved + t.dot(a) * a;
+  return bent;
+}
+
+// The one-run sweep `swept` of `rows` rows with its motion bent `f` times
+// as much about its middle ring's centre (bent_motion()), its frames
+// composed again from the middle ring.
+inline void bend_sweep(Swept_section& swept, std::size_t rows, double f)
+{
+  swept.motion[0] = bent_motion(swept.motion[0], swept.section.rowwise().mean(), f);
+  const std::size_t middle = rows / 2;
+  for(std::size_t i = middle; i < rows; ++i)
+    swept.frame[i + 1] = swept.motion[0] * swept.frame[i];
+  for(std::size_t i = middle; i > 0; --i)
+    swept.frame[i - 1] = swept.motion[0].inverse() * swept.frame[i];
+}
+
+// The sweep start of a full grid closed around its round rings whose runs
+// `run_of` are groups separated by coaxial transition rows
+// (coaxial_transition_layout()): every group swept from its own section made
+// a regular polygon (fit_regular_polygon()), the first group rigidly aligned
+// with its input rings, every next one put coaxially after the one before,
+// as far along the axis as their input rings' centres are apart; the whole
+// then rigidly aligned with the input. Empty when a ring lies in no group or
+// two transition rows meet. Arguments as place_sweep() takes them.
+inline Point_matrix coaxial_sweep_start(const Point_matrix& points, const std::vector<Eigen::Matrix3Xd>& ring,
+                                        const std::vector<std::vector<std::size_t> >& rings,
+                                        const std::vector<Eigen::ArrayXd>& present,
+                                        const std::vector<std::size_t>& run_of)
+{
+  const std::size_t rows = run_of.size();
+  const Eigen::Index width = ring[0].cols();
+  Eigen::Matrix3Xd surface(3, width * Eigen::Index(rows + 1));
+  std::size_t next_ring = 0;
+  for(const std::pair<std::size_t, std::size_t>& group : section_groups(run_of))
+  {
+    const std::size_t a = group.first, b = group.second;
+    if(a != next_ring)
+      return Point_matrix();
+    std::vector<std::size_t> group_run_of(run_of.begin() + a, run_of.begin() + b);
+    for(std::size_t& run : group_run_of)
+      run -= run_of[a];
+    Swept_section swept = group_swept_section(ring, present, group_run_of, a, b);
+    if(!swept.valid)
+      return Point_matrix();
+    swept.section = fit_regular_polygon(swept.section).points(width);
+    // The straight transition rows turn by nothing: the groups on both sides
+    // bend by half of a row's turn more each.
+    const double transitions = double(int(a > 0) + int(b < rows));
+    if(group_run_of.back() == 0)
+      bend_sweep(swept, b - a, (double(b - a) + transitions / 2) / double(b - a));
+    Eigen::Matrix3Xd group_surface = swept.swept();
+    Eigen::Matrix4d motion = Eigen::umeyama(group_surface, [&] {
+      Eigen::Matrix3Xd input(3, group_surface.cols());
+      for(std::size_t i = a; i <= b; ++i)
+        input.middleCols(width * Eigen::Index(i - a), width) = ring[i];
+      return input;
+    }(), false);
+    if(a > 0)
+    {
+      const double gap = (ring[a].rowwise().mean() - ring[a - 1].rowwise().mean()).norm();
+      motion = coaxial_motion(fit_regular_polygon(surface.middleCols(width * Eigen::Index(a - 1), width)),
+                              fit_regular_polygon(group_surface.leftCols(width)), gap);
+    }
+    surface.middleCols(width * Eigen::Index(a), group_surface.cols()) = apply_motion(motion, group_surface);
+    next_ring = b + 1;
+  }
+  if(next_ring != rows + 1)
+    return Point_matrix();
+  Point_matrix start = points;
+  place_sweep(start, surface, ring, rings, present, false);
+  return start;
+}
+
 // The start of quad_grid_sweep_start() on the grid `grid` of `pm` (its
 // lattice points `points_of_grid` when trimmed); empty when the clusters do
 // not lie as a sweep of it.
@@ -197,7 +345,7 @@ Point_matrix grid_sweep_start(const PolygonMesh& pm, VertexIndexMap vim,
   const std::vector<std::size_t> run_of = grid_row_runs(grid, label, one_run);
   std::vector<std::size_t> run_of_column;
   const Sweep_layout layout = sweep_layout(grid, label, run_of, run_of_column);
-  if(layout == Sweep_layout::NONE)
+  if(layout == Sweep_layout::NONE && one_run)
     return Point_matrix();
   const bool column_runs = layout == Sweep_layout::COLUMN_RUNS;
   auto vertex = [&](std::size_t r, std::size_t c, int i) {
@@ -212,11 +360,17 @@ Point_matrix grid_sweep_start(const PolygonMesh& pm, VertexIndexMap vim,
   if(rings.empty())
     return Point_matrix();
   const Eigen::Index width = Eigen::Index(rings[0].size());
+  const bool coaxial = layout == Sweep_layout::NONE && !one_run && std::size_t(width) == columns &&
+                       coaxial_transition_layout(grid, label, run_of);
+  if(layout == Sweep_layout::NONE && !coaxial)
+    return Point_matrix();
   std::vector<Eigen::Matrix3Xd> ring(rows + 1, Eigen::Matrix3Xd::Zero(3, width));
   for(std::size_t i = 0; i <= rows; ++i)
     for(Eigen::Index j = 0; j < width; ++j)
       if(present[i](j) > 0)
         ring[i].col(j) = points.row(Eigen::Index(rings[i][std::size_t(j)])).transpose();
+  if(coaxial)
+    return coaxial_sweep_start(points, ring, rings, present, run_of);
   if(!one_run && !column_runs)
     return grouped_sweep_start(points, ring, rings, present, run_of);
   Swept_section swept = swept_section(ring, run_of, column_runs, present, closed);

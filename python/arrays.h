@@ -187,6 +187,10 @@ inline void add_measure(py::dict& d, const TS::Tilability_measure& m)
   d["flattened_panels"] = m.flattened_panels;
   d["max_displacement"] = m.max_displacement;
   d["mean_displacement"] = m.mean_displacement;
+  d["panel_tolerance"] = m.panel_tolerance;
+  d["panel_deviations"] = vector_array(m.panel_deviations);
+  d["worst_panel_deviation"] = m.worst_panel_deviation;
+  d["within_panel_tolerance"] = m.within_panel_tolerance();
   const TS::Energy_terms& e = m.normalized_terms;
   d["normalized_terms"] = py::dict(py::arg("distance") = e.distance, py::arg("fairness") = e.fairness,
                                    py::arg("edge_length") = e.edge_length,

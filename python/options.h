@@ -46,6 +46,7 @@ struct Options
   int iterations = -1;
   double congruence_tolerance = TS::defaults::congruence_tolerance;
   bool planar_tiles = TS::defaults::planar_tiles;
+  double panel_tolerance = TS::defaults::panel_tolerance;
   int optimized_candidates = -1;
   int improvement_rounds = TS::defaults::number_of_improvement_rounds;
   int threads = 0;
@@ -163,6 +164,9 @@ inline const std::vector<Option>& option_table()
            "congruence error below which the result is tilable"),
     option("planar_tiles", CLUSTERING | OPTIMIZATION, &Options::planar_tiles,
            "every panel planar as well as congruent (gauss-newton only)"),
+    option("panel_tolerance", CLUSTERING | OPTIMIZATION, &Options::panel_tolerance,
+           "T in model units: every panel within T of its mold (largest corner distance after the best "
+           "rigid fit), panels that fit one mold within T share it; 0: exact congruence"),
     option("optimized_candidates", SEARCH, &Options::optimized_candidates,
            "clusterings of the pool optimized fully (< 0: the package's default for the mesh's size)"),
     option("improvement_rounds", SEARCH, &Options::improvement_rounds,
@@ -267,6 +271,7 @@ auto step_parameters(const Options& o, std::size_t number_of_faces, Visitor& vis
     .number_of_iterations(o.iterations >= 0 ? o.iterations : TS::default_number_of_iterations(solver))
     .congruence_tolerance(o.congruence_tolerance)
     .planar_tiles(o.planar_tiles)
+    .panel_tolerance(o.panel_tolerance)
     .number_of_optimized_candidates(o.optimized_candidates >= 0
                                       ? std::size_t(o.optimized_candidates)
                                       : TS::default_number_of_optimized_candidates(number_of_faces))

@@ -108,7 +108,9 @@ const char* const measure_doc =
   "'mean_symmetric_distance' (both ways), 'max_approximation_error', 'mean_approximation_error' "
   "(result to input), 'max_coverage_error', 'mean_coverage_error' (input to result), all over the "
   "input's bounding-box diagonal, 'self_intersecting_face_pairs', 'flattened_panels', "
-  "'max_displacement', 'mean_displacement' (mesh units), 'normalized_terms', "
+  "'max_displacement', 'mean_displacement' (mesh units), 'panel_tolerance', 'panel_deviations' (m,) "
+  "(each face's largest corner distance from its mold after the best rigid fit), "
+  "'worst_panel_deviation' (mesh units), 'within_panel_tolerance' (False at T = 0), 'normalized_terms', "
   "'buildability_warnings' (list of sentences)";
 
 const char* const optimization_doc =

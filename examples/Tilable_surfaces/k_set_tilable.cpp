@@ -544,6 +544,34 @@ void print_panel_tolerance(const TS::Tilability_measure& m)
             << " of the mean edge): the worst deviates " << m.worst_panel_deviation << "\n";
 }
 
+// Why the result is not tilable, and what may help: what was missed (exact
+// congruence, or every panel within the panel tolerance) and how the solver ended.
+void explain_not_tilable(const Options& o, const TS::K_set_tilable_result& result, bool stopped)
+{
+  const TS::Tilability_measure& m = result.optimization.measure;
+  const bool tolerance = m.panel_tolerance > 0;
+  std::cerr << "[k_set_tilable] not every panel fits its mold " << (m.requires_planar_tiles ? "and is planar " : "")
+            << (tolerance ? "within the panel tolerance; see the report's panel_deviation\n"
+                          : "within 1e-6 of the mean edge length; see the report's per-cluster congruence errors\n");
+  if(result.optimization.stalled)
+  {
+    std::cerr << "[k_set_tilable] no ";
+    if(tolerance)
+      std::cerr << "solution within the panel tolerance " << std::defaultfloat << std::setprecision(4)
+                << m.panel_tolerance << " near the input for this clustering: the solver stalled with a panel "
+                << m.worst_panel_deviation << " (model units) from its mold";
+    else
+      std::cerr << "exact solution near the input for this clustering: the solver stalled at " << std::scientific
+                << std::setprecision(2) << m.congruence_error << std::defaultfloat;
+    std::cerr << " with iterations left, after " << result.clustering.number_of_edit_rounds
+              << " rounds of split and merge (improvement and repair); more iterations would not help, a larger K may"
+              << (o.max_deviation >= 0 ? "" : " (--max-deviation D searches the smallest K within D)") << "\n";
+  }
+  else if(!stopped)
+    std::cerr << "[k_set_tilable] the solver used all its " << result.optimization.iterations
+              << " iterations: more (--iterations N) may make it tilable\n";
+}
+
 // The mean edge length of `mesh`, the unit of --panel-tolerance-relative.
 double mean_edge_length(const Mesh& mesh)
 {
@@ -754,22 +782,7 @@ int run_on(const Options& o, Mesh& mesh, const Mesh& input, const TS::IO::HTML_v
     std::cerr << "[k_set_tilable] WARNING: " << warning << "\n";
   print_panel_tolerance(m);
   if(!result.is_tilable())
-  {
-    std::cerr << "[k_set_tilable] not every panel fits its mold "
-              << (m.requires_planar_tiles ? "and is planar " : "")
-              << (m.panel_tolerance > 0 ? "within the panel tolerance; see the report's panel_deviation\n"
-                                        : "within 1e-6 of the mean edge length; see the report's per-cluster "
-                                          "congruence errors\n");
-    if(result.optimization.stalled)
-      std::cerr << "[k_set_tilable] no exact solution near the input for this clustering: the solver stalled at "
-                << std::scientific << std::setprecision(2) << m.congruence_error << std::defaultfloat
-                << " with iterations left, after " << result.clustering.number_of_edit_rounds
-                << " rounds of split and merge (improvement and repair); more iterations would not help, a larger K may"
-                << (o.max_deviation >= 0 ? "" : " (--max-deviation D searches the smallest K within D)") << "\n";
-    else if(!progress.stopped)
-      std::cerr << "[k_set_tilable] the solver used all its " << result.optimization.iterations
-                << " iterations: more (--iterations N) may make it tilable\n";
-  }
+    explain_not_tilable(o, result, progress.stopped);
   if(progress.stopped)
     std::cerr << "[k_set_tilable] the time limit (" << std::defaultfloat << std::setprecision(6) << o.time_limit
               << " s) ended the search: the result is the best found by then"

@@ -205,6 +205,21 @@ TEST(CommandLine, SaysWhenNoExactSolutionIsNearTheInput)
   EXPECT_NE(checked.output.find("no exact solution near the input"), std::string::npos) << checked.output;
 }
 
+// Within a panel tolerance T far below where its clusterings stall, the same
+// stall misses T, and the program says so: no solution within T, not "exact".
+TEST(CommandLine, SaysWhenNoSolutionWithinThePanelToleranceIsNearTheInput)
+{
+  Checked_run checked;
+  check_run_on("6-sub-lifted.obj", 7, "csv", &checked, "--panel-tolerance-relative 1e-6");
+  const double tolerance = checked.report["panel_deviation"]["tolerance"].get<double>();
+  EXPECT_GT(tolerance, 0);
+  EXPECT_GT(checked.report["panel_deviation"]["worst"].get<double>(), tolerance);
+  EXPECT_FALSE(checked.report["tilable"].get<bool>());
+  EXPECT_EQ(checked.report["optimization"]["ending"].get<std::string>(), "stalled");
+  EXPECT_NE(checked.output.find("no solution within the panel tolerance "), std::string::npos) << checked.output;
+  EXPECT_EQ(checked.output.find("no exact solution"), std::string::npos) << checked.output;
+}
+
 // A time limit passed before the first solver step: no solver moves a vertex,
 // so a mesh with no sweep comes back as it was read (6-sub-lifted, not
 // tilable at K = 7, see above), and a grid keeps its sweep's start, exact by

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <sstream>
 #include <string>
@@ -131,6 +132,36 @@ TEST(TileCatalog, JsonParsesBackWithTheSameNumbers)
   EXPECT_FALSE(t["planar"].get<bool>());
   EXPECT_EQ(t["mirrored"].get<std::size_t>(), 5u);
   EXPECT_EQ(t["worst_deviation"].get<double>(), 2.5e-7);
+}
+
+// With a panel tolerance T, `planar` says that a flat mold holds every
+// instance within T: the worst deviation plus half the distance between the
+// diagonals at most T. The lifted square's diagonals are d = h / sqrt(2 h^2 + 4)
+// apart along n = (h, -h, 2) / sqrt(2 h^2 + 4); moving t0, t2 by d / 2 along n
+// and t1, t3 by d / 2 against it flattens it, which is checked here too.
+TEST(TileCatalog, WithAPanelTolerancePlanarMeansAFlatMoldHoldsEveryInstanceWithinIt)
+{
+  const double h = 0.01, root = std::sqrt(2 * h * h + 4), d = h / root;
+  TS::Tile t = lifted_square(h);
+  const Vector3d n(h / root, -h / root, 2 / root);
+  std::array<Vector3d, 4> flat;
+  for(int i = 0; i < 4; ++i) flat[std::size_t(i)] = t.corners[i] + (i % 2 == 0 ? 0.5 : -0.5) * d * n;
+  EXPECT_NEAR((flat[1] - flat[0]).cross(flat[2] - flat[0]).dot(flat[3] - flat[0]), 0.0, 1e-15) << "flattened";
+
+  auto planar = [&](double tolerance) {
+    t.panel_tolerance = tolerance;
+    return TS::IO::tile_catalog_json({t})[0]["planar"].get<bool>();
+  };
+  const double needed = t.worst_deviation + d / 2;
+  EXPECT_FALSE(planar(0.0)) << "exact mode: diagonals " << d << " apart, above 1e-6 of the edge";
+  EXPECT_TRUE(planar(needed * (1 + 1e-9)));
+  EXPECT_FALSE(planar(needed * (1 - 1e-9)));
+  EXPECT_FALSE(planar(d / 2)) << "the instances' own deviation counts";
+
+  std::ostringstream out;
+  t.panel_tolerance = 2 * needed;
+  ASSERT_TRUE(TS::IO::write_tile_catalog_CSV(out, {t}));
+  EXPECT_EQ(csv_cells(out.str().substr(out.str().find('\n') + 1)).at(23), "1") << "the CSV agrees";
 }
 
 } // namespace test_tile_catalog_unit

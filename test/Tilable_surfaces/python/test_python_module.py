@@ -6,7 +6,8 @@
 Runs make_k_set_tilable on a small quad mesh (read with the example's OFF
 reader) and checks its result independently: each face's corners, read in its
 orientation, against its cluster's S-quad by a Kabsch rigid fit of our own;
-the displacement; the cluster sizes. Then that bad input raises ValueError
+the displacement; the cluster sizes; with a panel tolerance T, every face
+within T of its S-quad by the same fit. Then that bad input raises ValueError
 with the package's message, and that the GIL is released during the run.
 """
 import sys
@@ -104,6 +105,8 @@ class MakeKSetTilable(unittest.TestCase):
             (dict(vertices=bad_vertex, faces=f, k=K), "vertex 5"),
             (dict(vertices=v, faces=f, k=K, solver="magic"), "unknown solver"),
             (dict(vertices=v, faces=f, k=K, distance_weight=-1.0), "weights"),
+            (dict(vertices=v, faces=f, k=K, panel_tolerance=-0.1), "panel_tolerance is -0.1"),
+            (dict(vertices=v, faces=f, k=K, panel_tolerance="wide"), "panel_tolerance cannot be 'wide'"),
         ]
         for arguments, message in cases:
             with self.subTest(message=message):
@@ -119,6 +122,56 @@ class MakeKSetTilable(unittest.TestCase):
             lambda: tilable_surfaces.make_k_set_tilable(self.vertices, self.faces, k=K, seed=3, threads=1))
         self.assertGreater(duration, 0.05)
         self.assertLess(pause, 0.5 * duration)
+
+
+class PanelToleranceTest(unittest.TestCase):
+    """With panel_tolerance T every face lies within T of its cluster's S-quad (its mold), by a Kabsch
+    fit of our own; on one clustering, the slack is used: the result is closer to the input than the
+    exact one."""
+
+    RELATIVE_TOLERANCE = 0.02  # of the input's mean edge: far above the exact mode's 1e-6
+
+    @classmethod
+    def setUpClass(cls):
+        cls.vertices, cls.faces = numpy_checks.read_mesh(MESH, EXAMPLE)
+        cls.tolerance = cls.RELATIVE_TOLERANCE * mean_edge_length(cls.vertices, cls.faces)
+        arguments = dict(k=K, seed=3, number_of_candidates=8, threads=1)
+        cls.exact = tilable_surfaces.make_k_set_tilable(cls.vertices, cls.faces, **arguments)
+        cls.result = tilable_surfaces.make_k_set_tilable(cls.vertices, cls.faces, panel_tolerance=cls.tolerance,
+                                                         **arguments)
+
+    def deviations(self, result):
+        v, c, o, molds = result["vertices"], result["cluster"], result["orientation"], result["s_quads"]
+        return np.array([numpy_checks.kabsch_deviation(molds[c[f]], numpy_checks.instance(v, face, int(o[f])))
+                         for f, face in enumerate(self.faces)])
+
+    def test_every_instance_is_within_t_of_its_mold_by_our_own_rigid_fits(self):
+        r, ours = self.result, self.deviations(self.result)
+        self.assertTrue(r["is_tilable"])
+        self.assertTrue(r["within_panel_tolerance"])
+        self.assertEqual(r["panel_tolerance"], self.tolerance)
+        self.assertEqual(r["number_of_clusters"], K)
+        self.assertLessEqual(ours.max(), self.tolerance * (1 + 1e-9))
+        np.testing.assert_allclose(ours, r["panel_deviations"], rtol=0, atol=1e-9 * self.tolerance)
+        self.assertAlmostEqual(ours.max(), r["worst_panel_deviation"], delta=1e-9 * self.tolerance)
+
+    def test_on_the_same_clustering_the_tolerance_is_used_to_stay_closer_to_the_input(self):
+        exact = self.exact
+        exact_edge = numpy_checks.CONGRUENCE_TOLERANCE * mean_edge_length(exact["vertices"], self.faces)
+        self.assertLessEqual(self.deviations(exact).max(), exact_edge)
+        self.assertFalse(exact["within_panel_tolerance"])
+        surface = tilable_surfaces.KSetTilableSurface(self.vertices, self.faces)
+        surface.set_clustering(exact["cluster"], exact["orientation"])
+        r = surface.optimize(panel_tolerance=self.tolerance, threads=1)
+        r.update(vertices=surface.vertices(), cluster=exact["cluster"], orientation=exact["orientation"])
+        ours = self.deviations(r)
+        self.assertTrue(r["within_panel_tolerance"])
+        self.assertLessEqual(ours.max(), self.tolerance * (1 + 1e-9))
+        self.assertGreater(ours.max(), 100 * exact_edge)
+        displacement = np.linalg.norm(r["vertices"] - self.vertices, axis=1)
+        exact_displacement = np.linalg.norm(exact["vertices"] - self.vertices, axis=1)
+        self.assertLess(displacement.max(), exact_displacement.max())
+        self.assertLess(displacement.mean(), exact_displacement.mean())
 
 
 class TrianglesTest(unittest.TestCase):

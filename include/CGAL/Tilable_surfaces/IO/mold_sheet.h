@@ -182,7 +182,8 @@ inline std::vector<std::string> sheet_lines(const std::vector<Tile>& tiles, std:
     lines.push_back("diagonals t0t2 " + number(row.diagonals[0], L::shown_digits) + " t1t3 " +
                     number(row.diagonals[1], L::shown_digits));
   lines.push_back(angles);
-  lines.push_back(n == 3 || row.is_planar ? std::string("planar")
+  const char* const flat = t.panel_tolerance > 0 && n == 4 ? "planar within the panel tolerance" : "planar";
+  lines.push_back(n == 3 || row.is_planar ? std::string(flat)
                   : "twist 6V/e&#179; " + number(relative_twist(t.corners), 4) + ": t3 is " +
                       number(row.planarity, L::shown_digits) + " off the plane t0 t1 t2 (drawn from above)");
   lines.push_back("worst instance deviation " + number(t.worst_deviation, 3) + " (model units)");

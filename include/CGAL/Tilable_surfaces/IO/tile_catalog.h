@@ -37,16 +37,30 @@ struct Tile_row
   std::array<double, 2> diagonals;
   double signed_volume;
   double planarity;
-  bool is_planar; // diagonals within the default congruence tolerance of the mean edge
+  bool is_planar; // has_flat_mold()
 };
+
+// Whether the tile can be cut from a flat mold. Exact mode (no panel
+// tolerance): its diagonals lie within the default congruence tolerance of
+// its mean edge of each other. With a panel tolerance T: every instance lies
+// within T of a flat mold. Moving the two diagonals half their distance d
+// toward each other flattens the S-quad with no corner moving more than d / 2,
+// so an instance within `worst_deviation` of the S-quad is within
+// `worst_deviation` + d / 2 of that flat mold.
+inline bool has_flat_mold(const Tile& t, const std::array<double, 4>& edges)
+{
+  const double d = diagonal_distance(t.corners);
+  if(t.panel_tolerance > 0)
+    return t.worst_deviation + d / 2 <= t.panel_tolerance;
+  const double mean_edge = (edges[0] + edges[1] + edges[2] + edges[3]) / double(t.corners.size());
+  return d <= defaults::congruence_tolerance * mean_edge;
+}
 
 inline Tile_row tile_row(const Tile& t)
 {
   const std::array<double, 4> edges = edge_lengths(t.corners);
-  const double mean_edge = (edges[0] + edges[1] + edges[2] + edges[3]) / double(t.corners.size());
-  const bool is_planar = diagonal_distance(t.corners) <= defaults::congruence_tolerance * mean_edge;
   return Tile_row{edges, diagonal_lengths(t.corners), Tilable_surfaces::signed_volume(t.corners),
-                  planarity_defect(t.corners), is_planar};
+                  planarity_defect(t.corners), has_flat_mold(t, edges)};
 }
 
 // Refuses a catalog with a non-finite number, before anything is written.
@@ -69,8 +83,11 @@ inline void check_tiles(const std::vector<Tile>& tiles)
 /// (instances cut from the mirrored mold), the 12
 /// corner coordinates `t0x ... t3z`, the edge lengths `e01, e12, e23, e30`,
 /// the diagonals `d02, d13`, `signed_volume`, `planarity` (distance of t3 to
-/// the plane of t0, t1, t2), `planar` (1 if the diagonals are within 1e-6 of
-/// the tile's mean edge length of each other, a flat mold) and
+/// the plane of t0, t1, t2), `planar` (1 if the tile can be cut from a flat
+/// mold: its diagonals within 1e-6 of its mean edge length of each other, or
+/// with a panel tolerance T (`Tile::panel_tolerance`), `worst_deviation` plus
+/// half the distance between the diagonals at most T, so that every instance
+/// is within T of the S-quad flattened by that half) and
 /// `worst_deviation`, then `kind` (`quad` or `triangle`) and `mold` (tiles
 /// whose S-quads are congruent share one, `Tile::mold`). An S-triangle's
 /// row leaves `t3x, t3y, t3z`, `e30`, `d02` and `d13` empty, and its `e23`

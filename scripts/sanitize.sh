@@ -40,7 +40,7 @@ cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Sanitize \
   -DCMAKE_SHARED_LINKER_FLAGS_SANITIZE="-fsanitize=$sanitizers" \
   -DTILABLE_SURFACES_PYTHON_TEST_ENVIRONMENT="$python_environment" \
   -DTILABLE_SURFACES_BUILD_BENCHMARKS=OFF -DTILABLE_SURFACES_TEST_BATCH_SIZE=4 \
-  -DTILABLE_SURFACES_INPUT_TEST_BATCH_SIZE=6 -DTILABLE_SURFACES_TEST_TIMEOUT_SCALE=10 \
+  -DTILABLE_SURFACES_INPUT_TEST_BATCH_SIZE=4 -DTILABLE_SURFACES_TEST_TIMEOUT_SCALE=10 \
   > build-sanitize-configure.log 2>&1 \
   || { cat build-sanitize-configure.log; exit 1; }
 jobs=${SANITIZE_JOBS:-$(nproc 2>/dev/null || echo 2)}

@@ -183,6 +183,22 @@ double ring_fit(const TSI::Point_matrix& points, int a, int b)
   return ((t.topLeftCorner<3, 3>() * ring(a)).colwise() + t.topRightCorner<3, 1>() - ring(b)).colwise().norm().maxCoeff();
 }
 
+// The horn moved to `start`, the start of `label`, checked: every cluster
+// congruent (Umeyama, independently), the rings on each side of
+// `transition_row` congruent among themselves, but not all of them (the
+// section grows across the transition).
+Mesh expect_exact_with_growing_section(const Mesh& m, const TSI::Point_matrix& start,
+                                       const std::vector<std::size_t>& label, int transition_row)
+{
+  Mesh moved = moved_to(m, start);
+  const Clustering c = clustered(moved, label);
+  EXPECT_LE(congruence_by_umeyama(moved, c.cluster, c.orientation), 1e-12);
+  EXPECT_LE(ring_fit(start, 0, transition_row), 1e-12);
+  EXPECT_LE(ring_fit(start, transition_row + 1, rings), 1e-12);
+  EXPECT_GT(ring_fit(start, 0, rings), 0.1);
+  return moved;
+}
+
 } // namespace
 
 // With K = 24 = 3 x 8 molds the horn has, besides the sweep of three runs of
@@ -220,12 +236,7 @@ TEST(SweepStart, TransitionRowLetsTheSectionGrow)
   ASSERT_LE(transition_row, rings - 3);
   const TSI::Point_matrix start = start_of(m, transition);
   ASSERT_EQ(start.rows(), input.rows());
-  Mesh moved = moved_to(m, start);
-  const Clustering c = clustered(moved, transition);
-  EXPECT_LE(congruence_by_umeyama(moved, c.cluster, c.orientation), 1e-12);
-  EXPECT_LE(ring_fit(start, 0, transition_row), 1e-12);
-  EXPECT_LE(ring_fit(start, transition_row + 1, rings), 1e-12);
-  EXPECT_GT(ring_fit(start, 0, rings), 0.1);
+  expect_exact_with_growing_section(m, start, transition, transition_row);
   const double transition_distance = (start - input).rowwise().norm().maxCoeff();
   const double one_section_distance = (start_of(m, one_section) - input).rowwise().norm().maxCoeff();
   EXPECT_LT(transition_distance, 0.75 * one_section_distance);
@@ -255,12 +266,7 @@ TEST(SweepStart, CoaxialTransitionLoopIsOneMold)
   ASSERT_LE(transition_row, rings - 3);
   const TSI::Point_matrix start = start_of(m, label);
   ASSERT_EQ(start.rows(), rings * around + around);
-  Mesh moved = moved_to(m, start);
-  const Clustering c = clustered(moved, label);
-  EXPECT_LE(congruence_by_umeyama(moved, c.cluster, c.orientation), 1e-12);
-  EXPECT_LE(ring_fit(start, 0, transition_row), 1e-12);
-  EXPECT_LE(ring_fit(start, transition_row + 1, rings), 1e-12);
-  EXPECT_GT(ring_fit(start, 0, rings), 0.1);
+  const Mesh moved = expect_exact_with_growing_section(m, start, label, transition_row);
   const Mesh one_section = moved_to(m, start_of(m, loop_sweeps(m, 19, around).at(0)));
   EXPECT_LT(hausdorff_oracle::distances(moved, m).hausdorff(),
             0.75 * hausdorff_oracle::distances(one_section, m).hausdorff());

@@ -27,7 +27,6 @@
 
 #include <Eigen/Geometry>
 
-
 #include <algorithm>
 #include <array>
 #include <utility>
@@ -308,13 +307,15 @@ inline Point_matrix coaxial_sweep_start(const Point_matrix& points, const std::v
     if(group_run_of.back() == 0)
       bend_sweep(swept, b - a, (double(b - a) + transitions / 2) / double(b - a));
     Eigen::Matrix3Xd group_surface = swept.swept();
-    Eigen::Matrix4d motion = Eigen::umeyama(group_surface, [&] {
+    Eigen::Matrix4d motion;
+    if(a == 0)
+    {
       Eigen::Matrix3Xd input(3, group_surface.cols());
       for(std::size_t i = a; i <= b; ++i)
         input.middleCols(width * Eigen::Index(i - a), width) = ring[i];
-      return input;
-    }(), false);
-    if(a > 0)
+      motion = Eigen::umeyama(group_surface, input, false);
+    }
+    else
     {
       const double gap = (ring[a].rowwise().mean() - ring[a - 1].rowwise().mean()).norm();
       motion = coaxial_motion(fit_regular_polygon(surface.middleCols(width * Eigen::Index(a - 1), width)),

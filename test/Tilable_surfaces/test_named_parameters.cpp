@@ -4,6 +4,7 @@
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <CGAL/Tilable_surfaces/named_parameters.h>
+#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 
 #include <gtest/gtest.h>
 
@@ -97,6 +98,49 @@ TEST(NamedParameters, PropertyMapsAreStoredByValueAndShareTheirData)
   auto stored = get_parameter(np, TNP::face_cluster);
   put(stored, Mesh::Vertex_index(0), 42);
   EXPECT_EQ(get(cluster, Mesh::Vertex_index(0)), 42);
+}
+
+// The pipeline below a public function sees the caller's parameters in one
+// type whatever values were chained, and in whatever order: it is compiled
+// once for all of them. The values and the absent ones are kept.
+TEST(NamedParameters, CanonicalFormHasOneTypeAndKeepsTheValues)
+{
+  using TS::internal::canonical_parameters;
+  using TS::internal::parameter_or;
+  const auto a = canonical_parameters(TSP::number_of_tiles(5).solver(TS::PAPER_CONJUGATE_GRADIENT));
+  const auto b = canonical_parameters(TSP::random_seed(3u).distance_weight(0.5f).number_of_tiles(std::size_t(8)));
+  const auto none = canonical_parameters(TSP::default_values());
+  static_assert(std::is_same<decltype(a), decltype(b)>::value, "value parameters do not change the type");
+  static_assert(std::is_same<decltype(a), decltype(none)>::value, "absent parameters do not change the type");
+  static_assert(std::is_same<std::remove_const_t<decltype(a)>, decltype(canonical_parameters(a))>::value,
+                "canonical twice is canonical");
+
+  EXPECT_EQ(parameter_or(a, TNP::number_of_tiles, 0), 5);
+  EXPECT_EQ(parameter_or(a, TNP::solver, TS::CONSTRAINED_GAUSS_NEWTON), TS::PAPER_CONJUGATE_GRADIENT);
+  EXPECT_EQ(parameter_or(b, TNP::solver, TS::CONSTRAINED_GAUSS_NEWTON), TS::CONSTRAINED_GAUSS_NEWTON);
+  EXPECT_EQ(parameter_or(b, TNP::number_of_tiles, 0), 8);
+  EXPECT_EQ(parameter_or(b, CGAL::internal_np::random_seed, 0u), 3u);
+  EXPECT_DOUBLE_EQ(parameter_or(b, TNP::distance_weight, 1.0), 0.5);
+  EXPECT_DOUBLE_EQ(parameter_or(none, TNP::distance_weight, 1.0), 1.0);
+  EXPECT_EQ(parameter_or(canonical_parameters(a), TNP::number_of_tiles, 0), 5);
+  // A value chained in front of a canonical list is found first.
+  EXPECT_EQ(parameter_or(TSP::extend(a).number_of_tiles(11), TNP::number_of_tiles, 0), 11);
+
+  // Maps are passed on as given, and absent maps stay absent.
+  Mesh mesh;
+  const auto with_map = canonical_parameters(TSP::number_of_tiles(2).vertex_point_map(mesh.points()));
+  typedef CGAL::GetVertexPointMap<Mesh, std::remove_const_t<decltype(with_map)> >::const_type Vpm;
+  static_assert(std::is_same<Vpm, std::decay_t<decltype(mesh.points())> >::value, "the vertex point map is passed on");
+  EXPECT_TRUE(is_default(a, TNP::face_cluster));
+  EXPECT_TRUE(is_default(a, CGAL::internal_np::vertex_point));
+  // The pipeline's inputs leave out the output maps, which only the end writes.
+  auto cluster = mesh.add_property_map<Mesh::Face_index, int>("f:c", 0).first;
+  const auto outputs = TSP::number_of_tiles(2).face_cluster_map(cluster);
+  EXPECT_FALSE(is_default(canonical_parameters(outputs), TNP::face_cluster));
+  EXPECT_TRUE(is_default(TS::internal::canonical_inputs(outputs), TNP::face_cluster));
+  static_assert(std::is_same<decltype(TS::internal::canonical_inputs(outputs)),
+                             decltype(TS::internal::canonical_inputs(TSP::default_values()))>::value,
+                "output maps do not change the pipeline's type");
 }
 
 } // namespace test_named_parameters_unit

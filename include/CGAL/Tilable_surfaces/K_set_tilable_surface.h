@@ -19,6 +19,7 @@
 #include <CGAL/Tilable_surfaces/visitor.h>
 #include <CGAL/Tilable_surfaces/internal/Search/fidelity_search.h>
 #include <CGAL/Tilable_surfaces/internal/Search/refinement.h>
+#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/sweep_start.h>
 #include <CGAL/Tilable_surfaces/internal/tilable_surface_parameters.h>
 #include <CGAL/Tilable_surfaces/internal/tilable_surface_state.h>
@@ -359,7 +360,7 @@ public:
     m_state.require_clustering();
     if(m_state.clustering.candidates.empty())
       return optimize(user_np);
-    return internal::optimize_closest<ConcurrencyTag>(*this, m_state, user_np);
+    return internal::optimize_closest<ConcurrencyTag>(*this, m_state, internal::canonical_inputs(user_np));
   }
 
   /// Refines the current result to `k` clusters: splits the cluster with
@@ -391,8 +392,8 @@ public:
                           Invalid_input::PARAMETER);
     const std::size_t refined_k = number_of_clusters();
     bool retagged_wins = false;
-    m_state.set_solution(internal::refined_solution<ConcurrencyTag>(m_state.candidate_solver(), m_state.model, k, np,
-                                                                    retagged_wins));
+    m_state.set_solution(internal::refined_solution<ConcurrencyTag>(
+      m_state.candidate_solver(), m_state.model, k, internal::canonical_inputs(np), retagged_wins));
     m_state.clustering = Clustering_result();
     m_state.clustering.weights_are_exact = false;
     m_state.clustering.choice_reason = internal::refinement_reason(refined_k, k, retagged_wins);
@@ -437,7 +438,10 @@ private:
   template <typename NamedParameters>
   void start_clustering(const NamedParameters& np)
   {
-    m_state.start_clustering(np, internal::exact_sweep_ends_search(np, num_faces(m_state.mesh)));
+    static_assert(!parameters::is_default_parameter<NamedParameters, internal_np::number_of_tiles_t>::value,
+                  "the named parameter number_of_tiles is required");
+    const auto cnp = internal::canonical_inputs(np);
+    m_state.start_clustering(cnp, internal::exact_sweep_ends_search(cnp, num_faces(m_state.mesh)));
   }
 
   // Runs f with the parallelism of ConcurrencyTag (the steps that compute).
@@ -449,7 +453,8 @@ private:
   template <typename NP>
   auto with_own_maps(const NP& np)
   {
-    return m_state.step_parameters().with_maps(np, m_state.vpm, face_cluster_map(), face_orientation_map());
+    return m_state.step_parameters().with_maps(internal::canonical_inputs(np), m_state.vpm, face_cluster_map(),
+                                               face_orientation_map());
   }
 
   State m_state;  // the input, the clustering, the pool, the graph, the last optimization

@@ -16,6 +16,7 @@
 /// `PROPER_RIGID_MOTIONS`), `vertex_point_map`, `face_index_map`.
 /// The number of clusters K is the largest id in `face_cluster_map` plus one.
 
+#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/cluster_panels.h>
 #include <CGAL/Tilable_surfaces/internal/canonical_face_order.h>
 
@@ -30,9 +31,7 @@ namespace internal {
 template <typename NP>
 Orientation_policy orientation_policy(const NP& np)
 {
-  return parameters::choose_parameter(
-    parameters::get_parameter(np, CGAL::Tilable_surfaces::internal_np::orientation_policy),
-    defaults::orientation_policy);
+  return parameter_or(np, CGAL::Tilable_surfaces::internal_np::orientation_policy, defaults::orientation_policy);
 }
 
 // The three edits on the clustered-mesh model, given the quads of the faces
@@ -200,8 +199,7 @@ template <class PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 std::size_t split_cluster(const PolygonMesh& pm, std::size_t c, const CGAL_NP_CLASS& np)
 {
   internal::Editable_clustering<PolygonMesh, CGAL_NP_CLASS> e(pm, np);
-  CGAL::Random random(parameters::choose_parameter(
-    parameters::get_parameter(np, CGAL::internal_np::random_seed), defaults::random_seed));
+  CGAL::Random random(internal::parameter_or(np, CGAL::internal_np::random_seed, defaults::random_seed));
   internal::split_cluster(e.fc, e.faces.quads, c, internal::orientation_policy(np), random);
   e.write(pm, np);
   return e.degree_of_flexibility(pm);
@@ -220,8 +218,7 @@ template <class PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 std::size_t retag_orientations(const PolygonMesh& pm, const CGAL_NP_CLASS& np)
 {
   internal::Editable_clustering<PolygonMesh, CGAL_NP_CLASS> e(pm, np);
-  const double tau = parameters::choose_parameter(
-    parameters::get_parameter(np, CGAL::Tilable_surfaces::internal_np::similarity_threshold),
+  const double tau = internal::parameter_or(np, CGAL::Tilable_surfaces::internal_np::similarity_threshold,
     defaults::similarity_threshold);
   internal::retag_orientations(e.fc, pm, e.fim, e.faces.quads, internal::orientation_policy(np),
                                tau * mean_edge_length(pm, np));

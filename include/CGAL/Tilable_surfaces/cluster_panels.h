@@ -8,6 +8,7 @@
 /// Clustering of the quads of a mesh into K S-quads (paper §3 and §5; user
 /// manual, section Clustering).
 
+#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/Edge_sharing_graph.h>
 #include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/exceptions.h>
@@ -201,28 +202,21 @@ void describe_clustering(const std::vector<std::size_t>& label, std::size_t k, c
 template <typename NP>
 Clustering_settings clustering_settings(const NP& np)
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
   namespace TS_np = CGAL::Tilable_surfaces::internal_np;
   Clustering_settings s;
-  s.width = choose_parameter(get_parameter(np, TS_np::number_of_candidates), defaults::number_of_candidates);
-  s.relative_threshold =
-    choose_parameter(get_parameter(np, TS_np::similarity_threshold), defaults::similarity_threshold);
-  s.lambda = choose_parameter(get_parameter(np, TS_np::flexibility_penalty), defaults::flexibility_penalty);
-  s.mu = choose_parameter(get_parameter(np, TS_np::structure_penalty), defaults::structure_penalty);
-  s.use_kmeans =
-    choose_parameter(get_parameter(np, TS_np::use_kmeans_candidate), defaults::use_kmeans_candidate);
-  s.auto_merge = choose_parameter(get_parameter(np, TS_np::use_auto_merge), defaults::use_auto_merge);
-  s.use_strips =
-    choose_parameter(get_parameter(np, TS_np::use_strip_candidates), defaults::use_strip_candidates);
-  s.use_segments =
-    choose_parameter(get_parameter(np, TS_np::use_segment_candidates), defaults::use_segment_candidates);
-  s.path = choose_parameter(get_parameter(np, TS_np::clustering_path), defaults::clustering_path);
-  s.exact_limit =
-    choose_parameter(get_parameter(np, TS_np::exact_clustering_limit), defaults::exact_clustering_limit);
-  s.policy = choose_parameter(get_parameter(np, TS_np::orientation_policy), defaults::orientation_policy);
-  s.seed = choose_parameter(get_parameter(np, CGAL::internal_np::random_seed), defaults::random_seed);
-  s.separate_twists = !choose_parameter(get_parameter(np, TS_np::planar_tiles), defaults::planar_tiles);
+  s.width = parameter_or(np, TS_np::number_of_candidates, defaults::number_of_candidates);
+  s.relative_threshold = parameter_or(np, TS_np::similarity_threshold, defaults::similarity_threshold);
+  s.lambda = parameter_or(np, TS_np::flexibility_penalty, defaults::flexibility_penalty);
+  s.mu = parameter_or(np, TS_np::structure_penalty, defaults::structure_penalty);
+  s.use_kmeans = parameter_or(np, TS_np::use_kmeans_candidate, defaults::use_kmeans_candidate);
+  s.auto_merge = parameter_or(np, TS_np::use_auto_merge, defaults::use_auto_merge);
+  s.use_strips = parameter_or(np, TS_np::use_strip_candidates, defaults::use_strip_candidates);
+  s.use_segments = parameter_or(np, TS_np::use_segment_candidates, defaults::use_segment_candidates);
+  s.path = parameter_or(np, TS_np::clustering_path, defaults::clustering_path);
+  s.exact_limit = parameter_or(np, TS_np::exact_clustering_limit, defaults::exact_clustering_limit);
+  s.policy = parameter_or(np, TS_np::orientation_policy, defaults::orientation_policy);
+  s.seed = parameter_or(np, CGAL::internal_np::random_seed, defaults::random_seed);
+  s.separate_twists = !parameter_or(np, TS_np::planar_tiles, defaults::planar_tiles);
   s.panel_tolerance = panel_tolerance_of(np);
   return s;
 }
@@ -553,8 +547,7 @@ private:
 template <typename NamedParameters>
 std::size_t tile_count(const NamedParameters& np, std::size_t n)
 {
-  const long long k = static_cast<long long>(
-    parameters::get_parameter(np, CGAL::Tilable_surfaces::internal_np::number_of_tiles));
+  const long long k = parameter_or(np, CGAL::Tilable_surfaces::internal_np::number_of_tiles, 0LL);
   if(k < 1)
     throw Invalid_input("number_of_tiles is " + std::to_string(k) + ", it must be at least 1",
                         Invalid_input::PARAMETER);
@@ -570,7 +563,6 @@ template <class PolygonMesh, typename NamedParameters>
 Clustering_result cluster_panels(Validated_mesh, const PolygonMesh& pm, const NamedParameters& np,
                                 const std::vector<Panel>& quads)
 {
-  using parameters::choose_parameter;
   using parameters::get_parameter;
   namespace TS_np = CGAL::Tilable_surfaces::internal_np;
   const std::size_t k = tile_count(np, num_faces(pm));
@@ -719,8 +711,9 @@ Clustering_result cluster_panels(const PolygonMesh& pm, const CGAL_NP_CLASS& np)
                 "cluster_panels(): the named parameter number_of_tiles is required");
   internal::require_face_maps<CGAL_NP_CLASS>();
   validate_panel_mesh(pm, np);
-  return internal::cluster_panels(internal::Validated_mesh(true), pm, np,
-                                 internal::face_quads(pm, CGAL::get_initialized_face_index_map(pm, np), np));
+  const auto cnp = internal::canonical_parameters(np);
+  return internal::cluster_panels(internal::Validated_mesh(true), pm, cnp,
+                                 internal::face_quads(pm, CGAL::get_initialized_face_index_map(pm, cnp), cnp));
 }
 
 #ifndef CGAL_NO_DEPRECATED_CODE

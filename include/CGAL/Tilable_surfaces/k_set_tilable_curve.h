@@ -9,6 +9,7 @@
 /// range of K, one `Tile_count_trial` per K.
 
 #include <CGAL/Tilable_surfaces/make_k_set_tilable.h>
+#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 
 #include <CGAL/boost/graph/named_params_helper.h>
 
@@ -52,8 +53,9 @@ std::vector<Tile_count_trial> k_set_tilable_curve(PolygonMesh& pm,
   using parameters::choose_parameter;
   using parameters::get_parameter;
   typedef typename CGAL::GetVertexPointMap<PolygonMesh, CGAL_NP_CLASS>::type Vertex_point_map;
-  auto&& visitor = internal::visitor_of(np);
   internal::panel_tolerance_of(np); // refused before anything is done
+  const auto cnp = internal::canonical_inputs(np);
+  auto&& visitor = internal::visitor_of(cnp);
 
   for(std::size_t k : tile_counts)
     if(k < 1 || k > num_faces(pm))
@@ -70,7 +72,8 @@ std::vector<Tile_count_trial> k_set_tilable_curve(PolygonMesh& pm,
   for(std::size_t k : tile_counts)
   {
     bool stopped = false;
-    const internal::Kept_result<Point> r = internal::result_at(k, surface, pm, vpm, fim, sources, np, visitor, stopped);
+    const internal::Kept_result<Point> r =
+      internal::result_at(k, surface, pm, vpm, fim, sources, cnp, visitor, stopped);
     trials.push_back(r.trial);
     sources.offer(r);
     if(stopped)

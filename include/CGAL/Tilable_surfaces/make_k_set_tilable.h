@@ -11,6 +11,7 @@
 #include <CGAL/Tilable_surfaces/K_set_tilable_result.h>
 #include <CGAL/Tilable_surfaces/K_set_tilable_surface.h>
 #include <CGAL/Tilable_surfaces/internal/Search/tile_count_search.h>
+#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/internal/panel_tolerance.h>
 
 #include <CGAL/Real_timer.h>
@@ -77,8 +78,9 @@ K_set_tilable_result make_k_set_tilable(PolygonMesh& pm, const CGAL_NP_CLASS& np
   using parameters::choose_parameter;
   using parameters::get_parameter;
   typedef typename CGAL::GetVertexPointMap<PolygonMesh, CGAL_NP_CLASS>::type Vertex_point_map;
-  auto&& visitor = internal::visitor_of(np);
   internal::panel_tolerance_of(np); // refused before anything is done
+  const auto cnp = internal::canonical_inputs(np);
+  auto&& visitor = internal::visitor_of(cnp);
 
   K_set_tilable_result result;
   CGAL::Real_timer total;
@@ -91,13 +93,13 @@ K_set_tilable_result make_k_set_tilable(PolygonMesh& pm, const CGAL_NP_CLASS& np
 
   if constexpr(!parameters::is_default_parameter<CGAL_NP_CLASS, internal_np::max_deviation_t>::value)
   {
-    result = internal::search_tile_count(pm, surface, surface_vpm, np, visitor);
+    result = internal::search_tile_count(pm, surface, surface_vpm, cnp, np, visitor);
     result.validation_time = validation_time;
   }
   else
   {
     result.validation_time = validation_time;
-    internal::cluster_and_optimize(surface, np, visitor, result);
+    internal::cluster_and_optimize(surface, cnp, visitor, result);
     internal::copy_face_output(pm, get_parameter(np, internal_np::face_cluster), surface.face_cluster_map());
     internal::copy_face_output(pm, get_parameter(np, internal_np::face_orientation),
                                surface.face_orientation_map());

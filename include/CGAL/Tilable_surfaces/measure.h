@@ -15,6 +15,7 @@
 #include <CGAL/Tilable_surfaces/internal/Measure/congruence.h>
 #include <CGAL/Tilable_surfaces/internal/Measure/self_intersections.h>
 #include <CGAL/Tilable_surfaces/internal/Tilable_problem.h>
+#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/congruence_quantities.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/fairness_operator.h>
 #include <CGAL/Tilable_surfaces/internal/panel_tolerance.h>
@@ -430,7 +431,8 @@ Tilability_measure measure_tilability(const PolygonMesh& result, const PolygonMe
   validate_panel_mesh(input, np_input);
   if(num_vertices(result) != num_vertices(input) || num_faces(result) != num_faces(input))
     throw Invalid_input("the result and the input do not have the same numbers of vertices and faces");
-  return internal::measure_tilability(internal::Validated_mesh(true), result, input, np, np_input);
+  return internal::measure_tilability(internal::Validated_mesh(true), result, input,
+                                      internal::canonical_parameters(np), internal::canonical_parameters(np_input));
 }
 
 /// \ingroup PkgTilableSurfacesRef

@@ -8,6 +8,7 @@
 /// Moves the vertices of a clustered quad mesh so that the instances of every
 /// cluster become congruent (paper §4; user manual, section Optimization).
 
+#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/exceptions.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/Solver_settings.h>
@@ -134,25 +135,18 @@ struct Optimization_setup
     panel_tolerance = panel_tolerance_of(np);
     problem = make_tilable_problem(pm, np);
     mesh_face_index = mesh_face_indices(pm, np);
-    solver = choose_parameter(get_parameter(np, TS_np::solver), defaults::solver);
+    solver = parameter_or(np, TS_np::solver, defaults::solver);
     const bool gauss_newton = (solver == CONSTRAINED_GAUSS_NEWTON);
-    settings.weights.distance =
-      choose_parameter(get_parameter(np, TS_np::distance_weight), defaults::distance_weight);
-    settings.weights.fairness = choose_parameter(get_parameter(np, TS_np::fairness_weight),
-                                                 default_fairness_weight(solver));
-    const double tangential = choose_parameter(get_parameter(np, TS_np::tangential_weight),
-                                             defaults::tangential_weight);
-    settings.weights.edge_length = choose_parameter(get_parameter(np, TS_np::edge_length_weight),
-                                                   defaults::edge_length_weight);
-    settings.weights.diagonal = choose_parameter(get_parameter(np, TS_np::diagonal_weight),
-                                                defaults::diagonal_weight);
-    settings.weights.volume =
-      choose_parameter(get_parameter(np, TS_np::volume_weight), defaults::volume_weight);
-    settings.congruence_tolerance = choose_parameter(get_parameter(np, TS_np::congruence_tolerance),
-                                                     defaults::congruence_tolerance);
-    settings.convergence_tolerance = choose_parameter(get_parameter(np, TS_np::convergence_tolerance),
+    settings.weights.distance = parameter_or(np, TS_np::distance_weight, defaults::distance_weight);
+    settings.weights.fairness = parameter_or(np, TS_np::fairness_weight, default_fairness_weight(solver));
+    const double tangential = parameter_or(np, TS_np::tangential_weight, defaults::tangential_weight);
+    settings.weights.edge_length = parameter_or(np, TS_np::edge_length_weight, defaults::edge_length_weight);
+    settings.weights.diagonal = parameter_or(np, TS_np::diagonal_weight, defaults::diagonal_weight);
+    settings.weights.volume = parameter_or(np, TS_np::volume_weight, defaults::volume_weight);
+    settings.congruence_tolerance = parameter_or(np, TS_np::congruence_tolerance, defaults::congruence_tolerance);
+    settings.convergence_tolerance = parameter_or(np, TS_np::convergence_tolerance,
                                                       default_convergence_tolerance(solver));
-    settings.max_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
+    settings.max_iterations = parameter_or(np, CGAL::internal_np::number_of_iterations,
                                                default_number_of_iterations(solver));
 
     check_parameter(solver == CONSTRAINED_GAUSS_NEWTON || solver == PAPER_CONJUGATE_GRADIENT,
@@ -416,7 +410,7 @@ template <class PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 Optimization_result optimize_tilable_surface(PolygonMesh& pm, const CGAL_NP_CLASS& np)
 {
   validate_panel_mesh(pm, np);
-  return internal::optimize_tilable_surface(internal::Validated_mesh(true), pm, np);
+  return internal::optimize_tilable_surface(internal::Validated_mesh(true), pm, internal::canonical_parameters(np));
 }
 
 /// \ingroup PkgTilableSurfacesRef
@@ -468,7 +462,7 @@ template <class PolygonMesh, typename CGAL_NP_TEMPLATE_PARAMETERS>
 Displacement_prediction predict_displacement(const PolygonMesh& pm, const CGAL_NP_CLASS& np)
 {
   validate_panel_mesh(pm, np);
-  return internal::predict_displacement(internal::Validated_mesh(true), pm, np);
+  return internal::predict_displacement(internal::Validated_mesh(true), pm, internal::canonical_parameters(np));
 }
 
 } // namespace Tilable_surfaces

@@ -7,6 +7,7 @@
 // The mesh and its clustering turned into plain arrays indexed by vertex
 // index: the solvers and the measurements work on these, never on the mesh.
 
+#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/Edge_sharing_graph.h>
 #include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/exceptions.h>
@@ -198,10 +199,9 @@ Tilable_problem make_tilable_problem(const PolygonMesh& pm, const NamedParameter
   const auto fim = CGAL::get_initialized_face_index_map(pm, np);
 
   Tilable_problem problem;
-  problem.allow_mirror = parameters::choose_parameter(get_parameter(np, TS_np::orientation_policy),
+  problem.allow_mirror = parameter_or(np, TS_np::orientation_policy,
                                                       defaults::orientation_policy) == ALLOW_MIRRORED_PANELS;
-  problem.planar =
-    parameters::choose_parameter(get_parameter(np, TS_np::planar_tiles), defaults::planar_tiles);
+  problem.planar = parameter_or(np, TS_np::planar_tiles, defaults::planar_tiles);
   const Face_clustering clustering = read_face_clustering(pm, fim, cluster_map, orientation_map);
   problem.number_of_clusters = clustering.number_of_clusters;
   const Edge_sharing_graph<PolygonMesh> graph(Validated_mesh(true), pm, fim, vpm, clustering);

@@ -10,6 +10,7 @@
 // Read and checked here only, so that every entry point refuses a bad T with
 // the same message before it touches the mesh.
 
+#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/exceptions.h>
 #include <CGAL/Tilable_surfaces/named_parameters.h>
@@ -38,8 +39,8 @@ inline double checked_panel_tolerance(double t)
 template <typename NamedParameters>
 double panel_tolerance_of(const NamedParameters& np)
 {
-  return checked_panel_tolerance(parameters::choose_parameter(
-    parameters::get_parameter(np, CGAL::Tilable_surfaces::internal_np::panel_tolerance), defaults::panel_tolerance));
+  return checked_panel_tolerance(
+    parameter_or(np, CGAL::Tilable_surfaces::internal_np::panel_tolerance, defaults::panel_tolerance));
 }
 
 } // namespace internal

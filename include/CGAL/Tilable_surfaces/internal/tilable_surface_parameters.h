@@ -9,6 +9,7 @@
 // the object's index maps, points and clustering in front of the user's
 // parameters; and the concurrency its steps run with.
 
+#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/named_parameters.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 #include <CGAL/Tilable_surfaces/internal/Face_clustering.h>
@@ -91,8 +92,7 @@ struct Surface_parameters
       .face_index_map(fim)
       .face_cluster_map(cluster)
       .face_orientation_map(orientation)
-      .orientation_policy(parameters::choose_parameter(
-        parameters::get_parameter(np, internal_np::orientation_policy), policy));
+      .orientation_policy(parameter_or(np, internal_np::orientation_policy, policy));
   }
 
   // with_maps() with the clustering in `maps`, which must outlive the result.

@@ -10,6 +10,7 @@
 // candidate pool) and the last optimization result. The class offers the
 // steps; this keeps the data consistent between them.
 
+#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/Edge_sharing_graph.h>
 #include <CGAL/Tilable_surfaces/cluster_editing.h>
 #include <CGAL/Tilable_surfaces/cluster_panels.h>
@@ -158,13 +159,10 @@ struct Tilable_surface_state
   template <typename NamedParameters>
   void start_clustering(const NamedParameters& np, bool sweep_ends_search)
   {
-    static_assert(!parameters::is_default_parameter<NamedParameters, internal_np::number_of_tiles_t>::value,
-                  "the named parameter number_of_tiles is required");
     const std::size_t k = tile_count(np, num_faces(mesh));
     write_points(input_points);
     policy = orientation_policy(np);
-    similarity_threshold = parameters::choose_parameter(
-      parameters::get_parameter(np, internal_np::similarity_threshold), defaults::similarity_threshold);
+    similarity_threshold = parameter_or(np, internal_np::similarity_threshold, defaults::similarity_threshold);
     Clustering_settings settings = clustering_settings(np);
     if(sweep_ends_search)
       settings.sweep_ends_search = [pm = &mesh, face_index = fim, vertex_index = vim, input = input_point_map(),

@@ -8,6 +8,7 @@
 // linear operator D on vertex positions: F_f(X) = ||D X||^2 (Frobenius, the
 // same rows for x, y and z).
 
+#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/feature_detection.h>
 #include <CGAL/Tilable_surfaces/named_parameters.h>
@@ -95,8 +96,8 @@ std::vector<bool> feature_vertices(const PolygonMesh& pm, const Point_matrix& po
   using parameters::choose_parameter;
   using parameters::get_parameter;
   typedef typename boost::graph_traits<PolygonMesh>::edge_descriptor edge_descriptor;
-  const double feature_angle = choose_parameter(
-    get_parameter(np, CGAL::Tilable_surfaces::internal_np::feature_angle), defaults::feature_angle);
+  const double feature_angle =
+    parameter_or(np, CGAL::Tilable_surfaces::internal_np::feature_angle, defaults::feature_angle);
   const bool use_edge_map =
     !parameters::is_default_parameter<NamedParameters, CGAL::internal_np::edge_is_constrained_t>::value;
   const auto ecm = choose_parameter(get_parameter(np, CGAL::internal_np::edge_is_constrained),

@@ -62,6 +62,7 @@
 // copies (Candidate_solver), keeps and restores results (Solution), and
 // reads the pool and writes the choice (Clustering_result).
 
+#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/Edge_sharing_graph.h>
 #include <CGAL/Tilable_surfaces/cluster_panels.h>
 #include <CGAL/Tilable_surfaces/defaults.h>
@@ -94,7 +95,7 @@ namespace internal {
 template <typename NP>
 std::size_t optimized_candidate_count(const NP& np, std::size_t number_of_faces)
 {
-  return parameters::choose_parameter(parameters::get_parameter(np, internal_np::number_of_optimized_candidates),
+  return parameter_or(np, internal_np::number_of_optimized_candidates,
                                       default_number_of_optimized_candidates(number_of_faces));
 }
 
@@ -119,13 +120,10 @@ public:
   Fidelity_search(Surface& surface, State& state, const NamedParameters& np, Visitor& visitor)
     : m_surface(surface), m_state(state), m_np(np), m_visitor(visitor), m_solver(state.candidate_solver())
   {
-    using parameters::choose_parameter;
-    using parameters::get_parameter;
     m_optimized = optimized_candidate_count(np, m_solver.number_of_faces());
-    m_rounds = choose_parameter(get_parameter(np, internal_np::number_of_improvement_rounds),
-                                defaults::number_of_improvement_rounds);
+    m_rounds = parameter_or(np, internal_np::number_of_improvement_rounds, defaults::number_of_improvement_rounds);
     m_timer.start();
-    m_user_iterations = choose_parameter(get_parameter(np, CGAL::internal_np::number_of_iterations),
+    m_user_iterations = parameter_or(np, CGAL::internal_np::number_of_iterations,
                                          default_number_of_iterations(CONSTRAINED_GAUSS_NEWTON));
   }
 

@@ -18,6 +18,7 @@
 #include <CGAL/Tilable_surfaces/internal/Clustering/panel_kinds.h>
 #include <CGAL/Tilable_surfaces/internal/Search/kept_results.h>
 #include <CGAL/Tilable_surfaces/internal/Search/smallest_passing_tile_count.h>
+#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/internal/tuning.h>
 
 #include <CGAL/Real_timer.h>
@@ -27,6 +28,7 @@
 
 #include <algorithm>
 #include <cstddef>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -53,8 +55,6 @@ template <typename Surface, typename NamedParameters, typename Visitor>
 void cluster_and_optimize(Surface& surface, const NamedParameters& np, Visitor& visitor,
                           K_set_tilable_result& result)
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
   const auto stage_np = with_visitor(np, visitor);
   CGAL::Real_timer phase;
   phase.start();
@@ -62,8 +62,7 @@ void cluster_and_optimize(Surface& surface, const NamedParameters& np, Visitor& 
   result.clustering_time = phase.time();
   visitor.phase("clustering", result.clustering_time);
 
-  const bool paper_method = choose_parameter(get_parameter(np, internal_np::solver),
-                                            defaults::solver) == PAPER_CONJUGATE_GRADIENT;
+  const bool paper_method = parameter_or(np, internal_np::solver, defaults::solver) == PAPER_CONJUGATE_GRADIENT;
   result.optimization = paper_method ? surface.optimize(stage_np) : surface.optimize_closest(stage_np);
   result.clustering = surface.clustering();
   result.tiles = tile_catalog(result.optimization.measure);
@@ -131,22 +130,21 @@ Kept_result<Point> result_at(std::size_t k, Surface& surface, PolygonMesh& pm, V
 // tilable within `max_deviation`; else the result at the largest K tried.
 // Each K's result is refined from the best of fewer clusters tried when that
 // is better (result_at()), so that the deviation falls with K as the
-// gallop and bisection assume. The mesh and the output maps get the result
-// returned.
+// gallop and bisection assume. The mesh and the output maps of `outputs`
+// get the result returned.
 template <typename PolygonMesh, typename Surface, typename VertexPointMap,
-          typename NamedParameters, typename Visitor>
+          typename NamedParameters, typename OutputParameters, typename Visitor>
 K_set_tilable_result search_tile_count(PolygonMesh& pm, Surface& surface, VertexPointMap vpm,
-                                       const NamedParameters& np, Visitor& visitor)
+                                       const NamedParameters& np, const OutputParameters& outputs, Visitor& visitor)
 {
-  using parameters::choose_parameter;
   using parameters::get_parameter;
   typedef typename boost::property_traits<VertexPointMap>::value_type Point;
-  const double budget = get_parameter(np, internal_np::max_deviation);
+  const double budget = parameter_or(np, internal_np::max_deviation, std::numeric_limits<double>::quiet_NaN());
   if(!(budget >= 0))
     throw Invalid_input("max_deviation is " + std::to_string(budget) + ", it must be >= 0",
                         Invalid_input::PARAMETER);
   const std::size_t n = num_faces(pm);
-  const long long largest = choose_parameter(get_parameter(np, internal_np::number_of_tiles), (long long)(n));
+  const long long largest = parameter_or(np, internal_np::number_of_tiles, (long long)(n));
   if(largest < 1)
     throw Invalid_input("number_of_tiles (the largest K tried) is " + std::to_string(largest) +
                         ", it must be at least 1", Invalid_input::PARAMETER);
@@ -181,8 +179,8 @@ K_set_tilable_result search_tile_count(PolygonMesh& pm, Surface& surface, Vertex
                               k_max, passes);
 
   kept->put_points(pm, vpm);
-  copy_face_output(pm, get_parameter(np, internal_np::face_cluster), kept->cluster_map(fim));
-  copy_face_output(pm, get_parameter(np, internal_np::face_orientation), kept->orientation_map(fim));
+  copy_face_output(pm, get_parameter(outputs, internal_np::face_cluster), kept->cluster_map(fim));
+  copy_face_output(pm, get_parameter(outputs, internal_np::face_orientation), kept->orientation_map(fim));
   K_set_tilable_result result = std::move(kept->result);
   result.trials = trials;
   return result;

@@ -696,9 +696,9 @@ TEST(MakeKSetTilable, SameResultWhateverTheThreadCount)
   for(int threads : {1, 2})
   {
     tbb::global_control limit(tbb::global_control::max_allowed_parallelism, std::size_t(threads));
-    Mesh mesh = read("seashell.off");
+    Mesh mesh = read("de_beers_ginza.off");
     const TS::K_set_tilable_result r =
-      TS::make_k_set_tilable<CGAL::Parallel_tag>(mesh, TSP::number_of_tiles(96));
+      TS::make_k_set_tilable<CGAL::Parallel_tag>(mesh, TSP::number_of_tiles(20));
     results.push_back(points(mesh));
     predictions.emplace_back();
     for(const TS::Clustering_candidate& c : r.clustering.candidates)

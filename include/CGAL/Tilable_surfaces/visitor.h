@@ -45,9 +45,12 @@ struct Default_visitor
   /// "other candidates", "orientations" (no "merges" and "other candidates"
   /// when an exact sweep ends the search);
   /// `K_set_tilable_surface::optimize_closest()`: "sweep candidate",
-  /// "displacement prediction", "candidate optimization", "improvement round"
-  /// (the last three only when the search goes beyond the sweeps, the first
-  /// of them only up to 5,000 faces);
+  /// "multilevel start" (above 5,000 faces, on a 2 x 2 refinement without an
+  /// exact sweep, when the coarse result is exact; the coarse solve calls
+  /// `iteration()` but not `phase()`), "displacement prediction",
+  /// "candidate optimization", "improvement round" (the last three only when
+  /// the search goes beyond the exact starts, the first of them only up to
+  /// 5,000 faces);
   /// `make_k_set_tilable()` and `k_set_tilable_curve()`: "validation",
   /// "clustering", "optimization".
   void phase(const char* /*name*/, double /*seconds*/) {}

@@ -49,8 +49,13 @@ namespace Tilable_surfaces {
 /// `TOLERANCE_GROUPS`: with a `panel_tolerance`, the panels that already fit
 /// one mold within it grouped, when at most K groups are needed (user
 /// manual, section TS_Panel_tolerance).
+/// `MULTILEVEL`: made by no generator: above `large_mesh_faces`, on a mesh
+/// that is a 2 x 2 refinement, `K_set_tilable_surface::optimize_closest()`
+/// prolongates the exact result of a coarser mesh and pools it (user manual,
+/// section TS_Multilevel).
 enum Candidate_origins::Origin : int {
-  HIERARCHICAL, KMEANS, QUAD_STRIPS, GRID_SEGMENTS, GRID_SWEEPS, TWIST_SEPARATED, PATCH_SEGMENTS, TOLERANCE_GROUPS
+  HIERARCHICAL, KMEANS, QUAD_STRIPS, GRID_SEGMENTS, GRID_SWEEPS, TWIST_SEPARATED, PATCH_SEGMENTS, TOLERANCE_GROUPS,
+  MULTILEVEL
 };
 
 namespace internal {
@@ -67,7 +72,8 @@ inline const Candidate_origin_traits& origin_traits(Candidate_origins::Origin or
     {"sweep", false, true, 0, false},
     {"twist-separated", true, false, tuning::twist_separated_extra_quota_divisor, false},
     {"patch-segment", true, false, tuning::patch_segment_extra_quota_divisor, true},
-    {"tolerance-group", true, false, 0, true}};
+    {"tolerance-group", true, false, 0, true},
+    {"multilevel", false, false, 0, false}};
   return traits[origin];
 }
 

@@ -70,6 +70,7 @@
 #include <CGAL/Tilable_surfaces/visitor.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/candidate_generator.h>
 #include <CGAL/Tilable_surfaces/internal/Search/candidate_solver.h>
+#include <CGAL/Tilable_surfaces/internal/Search/multilevel_start.h>
 #include <CGAL/Tilable_surfaces/internal/parallel_for.h>
 #include <CGAL/Tilable_surfaces/internal/tilable_surface_parameters.h>
 #include <CGAL/Tilable_surfaces/internal/tuning.h>
@@ -132,6 +133,7 @@ public:
   const Optimization_result& run()
   {
     solve_sweeps();
+    solve_multilevel_start();
     m_sweep_suffices = m_optimized == 0 && m_best_sweep && m_best_sweep->optimization.converged;
     if(!m_stopped && !m_sweep_suffices)
       rank_candidates();
@@ -177,14 +179,34 @@ private:
         Solution solved = with_concurrency([&] {
           return m_solver.solved_candidate(i, m_np.number_of_iterations((std::min)(m_user_iterations, polish)));
         });
-        m_stopped = solved.optimization.stopped_by_visitor;
-        if(!m_best_sweep || is_better(solved.optimization, m_best_sweep->optimization))
-        {
-          m_best_sweep = std::move(solved);
-          m_best_sweep_index = i;
-        }
+        keep_exact_start(std::move(solved), i);
         m_visitor.phase("sweep candidate", m_timer.time());
       }
+  }
+
+  // Without an exact sweep: the multilevel start (multilevel_start.h), kept as a sweep is.
+  void solve_multilevel_start()
+  {
+    if(m_stopped || (m_best_sweep && m_best_sweep->optimization.converged))
+      return;
+    m_timer.reset();
+    std::optional<Solution> solved = with_concurrency(
+      [&] { return multilevel_solution<ConcurrencyTag>(m_state, m_solver, m_np, m_user_iterations); });
+    if(!solved)
+      return;
+    keep_exact_start(std::move(*solved), pool().size() - 1);
+    m_visitor.phase("multilevel start", m_timer.time());
+  }
+
+  // A candidate `i` solved from its exact start becomes the fallback if it is better.
+  void keep_exact_start(Solution solved, std::size_t i)
+  {
+    m_stopped = solved.optimization.stopped_by_visitor;
+    if(!m_best_sweep || is_better(solved.optimization, m_best_sweep->optimization))
+    {
+      m_best_sweep = std::move(solved);
+      m_best_sweep_index = i;
+    }
   }
 
   // Whether the candidates are ranked by predicted displacement. Above
@@ -461,10 +483,11 @@ private:
   // Why the result was chosen, in words.
   std::string choice_reason(bool sweep_chosen) const
   {
+    const std::string start = origin_traits(pool()[m_best_sweep_index].origin).name; // sweep or multilevel
     if(m_sweep_suffices)
-      return "an exact sweep clustering, no other candidate optimized (number_of_optimized_candidates 0)";
+      return "an exact " + start + " clustering, no other candidate optimized (number_of_optimized_candidates 0)";
     const Clustering_candidate& chosen = m_state.clustering.candidates[m_state.clustering.chosen_candidate];
-    return std::string(sweep_chosen ? "a sweep clustering, better than "
+    return std::string(sweep_chosen ? "a " + start + " clustering, better than "
                                     : "closest result (from a " + std::string(origin_traits(chosen.origin).name) +
                                         " candidate) among ") +
            "the " + std::to_string(m_ranked.size()) +

@@ -1,0 +1,252 @@
+// Copyright (c) 2026 Tilable_surfaces contributors.
+// SPDX-License-Identifier: GPL-3.0-or-later
+
+#ifndef CGAL_TILABLE_SURFACES_INTERNAL_SEARCH_MULTILEVEL_START_H
+#define CGAL_TILABLE_SURFACES_INTERNAL_SEARCH_MULTILEVEL_START_H
+
+// The multilevel exact start of the fidelity search (user manual, section
+// TS_Multilevel): above large_mesh_faces a solve from the input costs 1 to
+// 3 s per iteration and stalls, so a mesh that is a 2 x 2 refinement
+// (quad_coarsening.h) is coarsened, level by level, until it has at most
+// tuning::multilevel_coarsest_faces faces (not tried if it cannot be
+// coarsened that far, or K / 4 per level would be 0 before: the whole
+// search on a larger coarse mesh takes minutes, spot_quadrangulated's 2,928
+// quads 968 s, and does not end exact there). The coarsest mesh goes through the
+// pipeline (cluster(), optimize_closest()) at K / 4 per level; when that
+// result is exact, its positions and clustering are prolongated back to the
+// input mesh, where they are exact with four clusters per coarse one. The
+// largest clusters are then split in halves, orientations kept, up to K.
+// The search polishes the result from there (a few Gauss-Newton iterations,
+// kept only if better) and pools it as a MULTILEVEL candidate, which is
+// treated as the sweeps are: a fallback the final result must beat, and
+// the end of the search when no other candidate is to be optimized.
+
+#include <CGAL/Tilable_surfaces/Edge_sharing_graph.h>
+#include <CGAL/Tilable_surfaces/cluster_panels.h>
+#include <CGAL/Tilable_surfaces/defaults.h>
+#include <CGAL/Tilable_surfaces/exceptions.h>
+#include <CGAL/Tilable_surfaces/visitor.h>
+#include <CGAL/Tilable_surfaces/internal/Face_clustering.h>
+#include <CGAL/Tilable_surfaces/internal/Search/candidate_solver.h>
+#include <CGAL/Tilable_surfaces/internal/Shape_analysis/quad_coarsening.h>
+#include <CGAL/Tilable_surfaces/internal/Shape_analysis/quad_grid.h>
+#include <CGAL/Tilable_surfaces/internal/canonical_face_order.h>
+#include <CGAL/Tilable_surfaces/internal/panel_tolerance.h>
+#include <CGAL/Tilable_surfaces/internal/tuning.h>
+
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/boost/graph/named_params_helper.h>
+
+#include <algorithm>
+#include <cstddef>
+#include <functional>
+#include <optional>
+#include <type_traits>
+#include <utility>
+#include <vector>
+
+namespace CGAL {
+namespace Tilable_surfaces {
+
+template <typename ConcurrencyTag, typename PolygonMesh, typename VertexPointMap>
+class K_set_tilable_surface;
+
+namespace internal {
+
+// The user's visitor for the coarse solve: its iterations (a budget may
+// stop them), not its phases, which name the steps on the user's mesh.
+template <typename Visitor>
+struct Coarse_solve_visitor
+{
+  Visitor* visitor;
+
+  bool iteration(int iteration, double congruence_error, double objective)
+  {
+    return visitor->iteration(iteration, congruence_error, objective);
+  }
+  void phase(const char*, double) {}
+};
+
+template <typename T>
+struct is_coarse_solve_visitor : std::false_type
+{
+};
+template <typename V>
+struct is_coarse_solve_visitor<Coarse_solve_visitor<V> > : std::true_type
+{
+};
+template <typename V>
+struct is_coarse_solve_visitor<std::reference_wrapper<V> > : is_coarse_solve_visitor<std::remove_cv_t<V> >
+{
+};
+
+// The levels from the input mesh of `state` down to the mesh that is solved.
+template <typename Point>
+struct Coarsening_levels
+{
+  std::vector<Quad_coarsening> levels;  // the input's first
+  CGAL::Surface_mesh<Point> coarsest;
+  std::size_t k = 0;                    // K / 4 per level
+};
+
+// The input mesh of `state` coarsened while it has more than
+// tuning::multilevel_coarsest_faces faces, it can be, and `k` / 4 is at
+// least 1; no level if it cannot be coarsened once.
+template <typename State>
+Coarsening_levels<typename State::Point> coarsening_levels(const State& state, std::size_t k)
+{
+  typedef typename State::Point Point;
+  typedef CGAL::Surface_mesh<Point> Mesh;
+  Coarsening_levels<Point> result;
+  result.k = k;
+  std::optional<Quad_coarsening> level = quad_coarsening(state.mesh, state.fim, state.vim);
+  std::vector<Point> points = state.input_points;
+  Mesh coarse;
+  while(level && result.k / 4 >= 1 && make_coarse_mesh(*level, points, coarse))
+  {
+    result.levels.push_back(std::move(*level));
+    result.k /= 4;
+    result.coarsest = coarse;
+    if(num_faces(coarse) <= tuning::multilevel_coarsest_faces)
+      break;
+    points.assign(coarse.points().begin(), coarse.points().end());
+    level = quad_coarsening(coarse, get(CGAL::face_index, coarse), get(CGAL::vertex_index, coarse));
+  }
+  return result;
+}
+
+// The coarsest mesh of `levels` through the pipeline at `levels.k` with the
+// parameters `np` (K replaced): its positions (by vertex index) and its
+// clustering (by face index), if the result is exact.
+template <typename ConcurrencyTag, typename Point, typename NP, typename Visitor>
+std::optional<std::pair<std::vector<Point>, Face_clustering> >
+coarse_solution(Coarsening_levels<Point>& levels, const NP& np, Visitor& visitor)
+{
+  typedef CGAL::Surface_mesh<Point> Mesh;
+  Mesh& coarse = levels.coarsest;
+  Coarse_solve_visitor<Visitor> coarse_visitor{&visitor};
+  const auto coarse_np = with_visitor(parameters::extend(np).number_of_tiles(int(levels.k)), coarse_visitor);
+  try
+  {
+    K_set_tilable_surface<ConcurrencyTag, Mesh, typename CGAL::GetVertexPointMap<Mesh>::type> surface(
+      coarse, get(CGAL::vertex_point, coarse));
+    surface.cluster(coarse_np);
+    if(!surface.optimize_closest(coarse_np).converged)
+      return std::nullopt;
+    Face_clustering clustering{std::vector<std::size_t>(num_faces(coarse)),
+                               std::vector<Panel_orientation>(num_faces(coarse)), levels.k};
+    for(auto f : faces(coarse))
+    {
+      clustering.label[f.idx()] = std::size_t(get(surface.face_cluster_map(), f));
+      clustering.orientation[f.idx()] = Panel_orientation(get(surface.face_orientation_map(), f));
+    }
+    return std::make_pair(std::vector<Point>(coarse.points().begin(), coarse.points().end()), clustering);
+  }
+  catch(const Invalid_input&)
+  {
+    return std::nullopt; // a coarse mesh the pipeline refuses: no start
+  }
+}
+
+// Splits the cluster of `fc` with most faces (the first such) in two halves
+// by face index until it has `k` clusters or none has two faces. Each half
+// keeps its orientations: both stay instances of the one S-quad, so an
+// exact clustering stays exact.
+inline void split_in_halves_to(Face_clustering& fc, std::size_t k)
+{
+  while(fc.number_of_clusters < k)
+  {
+    std::vector<std::vector<std::size_t> > members = cluster_members(fc.label, fc.number_of_clusters);
+    auto largest = std::max_element(members.begin(), members.end(), [](const auto& a, const auto& b) {
+      return a.size() < b.size();
+    });
+    if(largest->size() < 2)
+      return;
+    for(std::size_t i = largest->size() / 2; i < largest->size(); ++i)
+      fc.label[(*largest)[i]] = fc.number_of_clusters;
+    ++fc.number_of_clusters;
+  }
+}
+
+// Whether the multilevel start is tried with the parameters `np`: the
+// default solver (the only one that starts from an exact start), no planar
+// panels, no panel tolerance and no vertex held (the coarse mesh would not
+// hold it).
+template <typename NP>
+bool multilevel_start_applies(const NP& np)
+{
+  using parameters::choose_parameter;
+  using parameters::get_parameter;
+  if constexpr(!parameters::is_default_parameter<NP, CGAL::internal_np::vertex_is_constrained_t>::value)
+    return false;
+  else
+    return choose_parameter(get_parameter(np, internal_np::solver), defaults::solver) ==
+             CONSTRAINED_GAUSS_NEWTON &&
+           !choose_parameter(get_parameter(np, internal_np::planar_tiles), defaults::planar_tiles) &&
+           panel_tolerance_of(np) == 0;
+}
+
+// The pool entry of the prolongated clustering `fc` (by canonical index).
+template <typename State>
+Clustering_candidate multilevel_candidate(const State& state, const Face_clustering& fc)
+{
+  Clustering_candidate candidate;
+  candidate.origin = Clustering_candidate::MULTILEVEL;
+  candidate.face_cluster = by_original_index(fc.label, state.input_faces.rank);
+  const auto graph =
+    edge_sharing_graph(state.mesh, state.fim, state.input_point_map(), fc.label, fc.orientation, fc.number_of_clusters);
+  candidate.degree_of_flexibility = graph.degree_of_flexibility();
+  candidate.length_deviation = graph.length_deviation();
+  return candidate;
+}
+
+// The multilevel start of the input of `state` at the K of its clustering,
+// solved by `solver` for tuning::multilevel_polish_iterations (at most
+// `user_iterations`) from where it is exact, and pooled; nothing when it
+// does not apply, the mesh is no 2 x 2 refinement, or the coarse result is
+// not exact. Inside a coarse solve it is not even compiled: each level
+// would instantiate the next.
+template <typename ConcurrencyTag, typename State, typename NP>
+std::optional<typename State::Solution> multilevel_solution(State& state, const Candidate_solver<State>& solver,
+                                                            const NP& np, int user_iterations)
+{
+  auto&& visitor = visitor_of(np);
+  typedef std::remove_reference_t<decltype(visitor)> Visitor;
+  if constexpr(is_coarse_solve_visitor<std::remove_cv_t<Visitor> >::value)
+    return std::nullopt;
+  else
+  {
+    const std::size_t k = state.model.number_of_clusters;
+    if(solver.number_of_faces() <= large_mesh_faces || !multilevel_start_applies(np))
+      return std::nullopt;
+    Coarsening_levels<typename State::Point> levels = coarsening_levels(state, k);
+    if(levels.levels.empty() || num_faces(levels.coarsest) > tuning::multilevel_coarsest_faces)
+      return std::nullopt;
+    auto coarse = coarse_solution<ConcurrencyTag>(levels, np, visitor);
+    if(!coarse)
+      return std::nullopt;
+    for(auto level = levels.levels.rbegin(); level != levels.levels.rend(); ++level)
+    {
+      coarse->first = prolongated_points(*level, coarse->first);
+      coarse->second = prolongated_clustering(*level, coarse->second);
+    }
+    Face_clustering& fc = coarse->second;
+    split_in_halves_to(fc, k);
+    relabel_by_first_face(fc.label);
+    std::vector<Clustering_candidate>& pool = state.clustering.candidates;
+    while(!pool.empty() && pool.back().origin == Clustering_candidate::MULTILEVEL)
+      pool.pop_back(); // of an earlier search on this clustering
+    pool.push_back(multilevel_candidate(state, fc));
+    const Point_matrix start =
+      read_points(state.mesh, typename State::Input_point_map(coarse->first.cbegin(), state.vim), state.vim);
+    return solver.solved_model(
+      std::move(fc), np.number_of_iterations((std::min)(user_iterations, tuning::multilevel_polish_iterations)),
+      &start);
+  }
+}
+
+} // namespace internal
+} // namespace Tilable_surfaces
+} // namespace CGAL
+
+#endif // CGAL_TILABLE_SURFACES_INTERNAL_SEARCH_MULTILEVEL_START_H

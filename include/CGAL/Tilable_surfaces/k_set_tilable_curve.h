@@ -54,8 +54,9 @@ std::vector<Tile_count_trial> k_set_tilable_curve(PolygonMesh& pm,
   using parameters::get_parameter;
   typedef typename CGAL::GetVertexPointMap<PolygonMesh, CGAL_NP_CLASS>::type Vertex_point_map;
   internal::panel_tolerance_of(np); // refused before anything is done
-  const auto cnp = internal::canonical_inputs(np);
-  auto&& visitor = internal::visitor_of(cnp);
+  auto&& user_visitor = internal::visitor_of(np);
+  internal::Visitor_ref visitor(user_visitor);
+  const auto cnp = internal::canonical_inputs(internal::with_visitor(np, visitor));
 
   for(std::size_t k : tile_counts)
     if(k < 1 || k > num_faces(pm))

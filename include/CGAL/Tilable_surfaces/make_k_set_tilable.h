@@ -79,8 +79,9 @@ K_set_tilable_result make_k_set_tilable(PolygonMesh& pm, const CGAL_NP_CLASS& np
   using parameters::get_parameter;
   typedef typename CGAL::GetVertexPointMap<PolygonMesh, CGAL_NP_CLASS>::type Vertex_point_map;
   internal::panel_tolerance_of(np); // refused before anything is done
-  const auto cnp = internal::canonical_inputs(np);
-  auto&& visitor = internal::visitor_of(cnp);
+  auto&& user_visitor = internal::visitor_of(np);
+  internal::Visitor_ref visitor(user_visitor);
+  const auto cnp = internal::canonical_inputs(internal::with_visitor(np, visitor));
 
   K_set_tilable_result result;
   CGAL::Real_timer total;

@@ -58,6 +58,34 @@ struct Default_visitor
 
 namespace internal {
 
+// A visitor of any type behind one type: what make_k_set_tilable() and
+// k_set_tilable_curve() hand to the pipeline, so that it is compiled once
+// whatever the user's visitor (and the multilevel start's coarse solve
+// shares that instantiation). `visitor` must outlive it.
+class Visitor_ref
+{
+public:
+  template <typename Visitor>
+  explicit Visitor_ref(Visitor& visitor)
+    : m_object(&visitor),
+      m_iteration([](void* v, int i, double error, double objective) {
+        return static_cast<Visitor*>(v)->iteration(i, error, objective);
+      }),
+      m_phase([](void* v, const char* name, double seconds) { static_cast<Visitor*>(v)->phase(name, seconds); })
+  {}
+
+  bool iteration(int i, double congruence_error, double objective)
+  {
+    return m_iteration(m_object, i, congruence_error, objective);
+  }
+  void phase(const char* name, double seconds) { m_phase(m_object, name, seconds); }
+
+private:
+  void* m_object;
+  bool (*m_iteration)(void*, int, double, double);
+  void (*m_phase)(void*, const char*, double);
+};
+
 // The visitor of `np`: the user's object if given as std::ref, else a copy of
 // it, or a Default_visitor.
 template <typename NamedParameters>

@@ -31,6 +31,7 @@
 #include <CGAL/Tilable_surfaces/internal/Shape_analysis/quad_coarsening.h>
 #include <CGAL/Tilable_surfaces/internal/Shape_analysis/quad_grid.h>
 #include <CGAL/Tilable_surfaces/internal/canonical_face_order.h>
+#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/internal/panel_tolerance.h>
 #include <CGAL/Tilable_surfaces/internal/tuning.h>
 
@@ -39,9 +40,7 @@
 
 #include <algorithm>
 #include <cstddef>
-#include <functional>
 #include <optional>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -65,19 +64,6 @@ struct Coarse_solve_visitor
     return visitor->iteration(iteration, congruence_error, objective);
   }
   void phase(const char*, double) {}
-};
-
-template <typename T>
-struct is_coarse_solve_visitor : std::false_type
-{
-};
-template <typename V>
-struct is_coarse_solve_visitor<Coarse_solve_visitor<V> > : std::true_type
-{
-};
-template <typename V>
-struct is_coarse_solve_visitor<std::reference_wrapper<V> > : is_coarse_solve_visitor<std::remove_cv_t<V> >
-{
 };
 
 // The levels from the input mesh of `state` down to the mesh that is solved.
@@ -125,7 +111,8 @@ coarse_solution(Coarsening_levels<Point>& levels, const NP& np, Visitor& visitor
   typedef CGAL::Surface_mesh<Point> Mesh;
   Mesh& coarse = levels.coarsest;
   Coarse_solve_visitor<Visitor> coarse_visitor{&visitor};
-  const auto coarse_np = with_visitor(parameters::extend(np).number_of_tiles(int(levels.k)), coarse_visitor);
+  Visitor_ref coarse_ref(coarse_visitor);  // the type of make_k_set_tilable()'s: one instantiation for both
+  const auto coarse_np = with_visitor(parameters::extend(np).number_of_tiles(int(levels.k)), coarse_ref);
   try
   {
     K_set_tilable_surface<ConcurrencyTag, Mesh, typename CGAL::GetVertexPointMap<Mesh>::type> surface(
@@ -175,15 +162,11 @@ inline void split_in_halves_to(Face_clustering& fc, std::size_t k)
 template <typename NP>
 bool multilevel_start_applies(const NP& np)
 {
-  using parameters::choose_parameter;
-  using parameters::get_parameter;
   if constexpr(!parameters::is_default_parameter<NP, CGAL::internal_np::vertex_is_constrained_t>::value)
     return false;
   else
-    return choose_parameter(get_parameter(np, internal_np::solver), defaults::solver) ==
-             CONSTRAINED_GAUSS_NEWTON &&
-           !choose_parameter(get_parameter(np, internal_np::planar_tiles), defaults::planar_tiles) &&
-           panel_tolerance_of(np) == 0;
+    return parameter_or(np, internal_np::solver, defaults::solver) == CONSTRAINED_GAUSS_NEWTON &&
+           !parameter_or(np, internal_np::planar_tiles, defaults::planar_tiles) && panel_tolerance_of(np) == 0;
 }
 
 // The pool entry of the prolongated clustering `fc` (by canonical index).
@@ -204,45 +187,39 @@ Clustering_candidate multilevel_candidate(const State& state, const Face_cluster
 // solved by `solver` for tuning::multilevel_polish_iterations (at most
 // `user_iterations`) from where it is exact, and pooled; nothing when it
 // does not apply, the mesh is no 2 x 2 refinement, or the coarse result is
-// not exact. Inside a coarse solve it is not even compiled: each level
-// would instantiate the next.
+// not exact. The coarse solve (at most multilevel_coarsest_faces faces) is
+// below large_mesh_faces, so it makes no multilevel start of its own.
 template <typename ConcurrencyTag, typename State, typename NP>
 std::optional<typename State::Solution> multilevel_solution(State& state, const Candidate_solver<State>& solver,
                                                             const NP& np, int user_iterations)
 {
-  auto&& visitor = visitor_of(np);
-  typedef std::remove_reference_t<decltype(visitor)> Visitor;
-  if constexpr(is_coarse_solve_visitor<std::remove_cv_t<Visitor> >::value)
+  static_assert(tuning::multilevel_coarsest_faces <= large_mesh_faces, "a coarse solve must not recurse");
+  const std::size_t k = state.model.number_of_clusters;
+  if(solver.number_of_faces() <= large_mesh_faces || !multilevel_start_applies(np))
     return std::nullopt;
-  else
+  Coarsening_levels<typename State::Point> levels = coarsening_levels(state, k);
+  if(levels.levels.empty() || num_faces(levels.coarsest) > tuning::multilevel_coarsest_faces)
+    return std::nullopt;
+  auto&& visitor = visitor_of(np);
+  auto coarse = coarse_solution<ConcurrencyTag>(levels, np, visitor);
+  if(!coarse)
+    return std::nullopt;
+  for(auto level = levels.levels.rbegin(); level != levels.levels.rend(); ++level)
   {
-    const std::size_t k = state.model.number_of_clusters;
-    if(solver.number_of_faces() <= large_mesh_faces || !multilevel_start_applies(np))
-      return std::nullopt;
-    Coarsening_levels<typename State::Point> levels = coarsening_levels(state, k);
-    if(levels.levels.empty() || num_faces(levels.coarsest) > tuning::multilevel_coarsest_faces)
-      return std::nullopt;
-    auto coarse = coarse_solution<ConcurrencyTag>(levels, np, visitor);
-    if(!coarse)
-      return std::nullopt;
-    for(auto level = levels.levels.rbegin(); level != levels.levels.rend(); ++level)
-    {
-      coarse->first = prolongated_points(*level, coarse->first);
-      coarse->second = prolongated_clustering(*level, coarse->second);
-    }
-    Face_clustering& fc = coarse->second;
-    split_in_halves_to(fc, k);
-    relabel_by_first_face(fc.label);
-    std::vector<Clustering_candidate>& pool = state.clustering.candidates;
-    while(!pool.empty() && pool.back().origin == Clustering_candidate::MULTILEVEL)
-      pool.pop_back(); // of an earlier search on this clustering
-    pool.push_back(multilevel_candidate(state, fc));
-    const Point_matrix start =
-      read_points(state.mesh, typename State::Input_point_map(coarse->first.cbegin(), state.vim), state.vim);
-    return solver.solved_model(
-      std::move(fc), np.number_of_iterations((std::min)(user_iterations, tuning::multilevel_polish_iterations)),
-      &start);
+    coarse->first = prolongated_points(*level, coarse->first);
+    coarse->second = prolongated_clustering(*level, coarse->second);
   }
+  Face_clustering& fc = coarse->second;
+  split_in_halves_to(fc, k);
+  relabel_by_first_face(fc.label);
+  std::vector<Clustering_candidate>& pool = state.clustering.candidates;
+  while(!pool.empty() && pool.back().origin == Clustering_candidate::MULTILEVEL)
+    pool.pop_back(); // of an earlier search on this clustering
+  pool.push_back(multilevel_candidate(state, fc));
+  const Point_matrix start =
+    read_points(state.mesh, typename State::Input_point_map(coarse->first.cbegin(), state.vim), state.vim);
+  return solver.solved_model(
+    std::move(fc), np.number_of_iterations((std::min)(user_iterations, tuning::multilevel_polish_iterations)), &start);
 }
 
 } // namespace internal

@@ -36,6 +36,7 @@
 #include <CGAL/Tilable_surfaces/internal/tuning.h>
 
 #include <CGAL/Surface_mesh.h>
+#include <CGAL/property_map.h>
 #include <CGAL/boost/graph/named_params_helper.h>
 
 #include <algorithm>
@@ -112,7 +113,15 @@ coarse_solution(Coarsening_levels<Point>& levels, const NP& np, Visitor& visitor
   Mesh& coarse = levels.coarsest;
   Coarse_solve_visitor<Visitor> coarse_visitor{&visitor};
   Visitor_ref coarse_ref(coarse_visitor);  // the type of make_k_set_tilable()'s: one instantiation for both
-  const auto coarse_np = with_visitor(parameters::extend(np).number_of_tiles(int(levels.k)), coarse_ref);
+  // The user's maps of the fine mesh do not apply to the coarse one.
+  const CGAL::internal_np::Param_not_found none;
+  const auto coarse_np = with_visitor(parameters::extend(np)
+                                       .number_of_tiles(int(levels.k))
+                                       .vertex_is_constrained_map(none)
+                                       .edge_is_constrained_map(none)
+                                       .edge_index_map(none)
+                                       .halfedge_index_map(none),
+                                     coarse_ref);
   try
   {
     K_set_tilable_surface<ConcurrencyTag, Mesh, typename CGAL::GetVertexPointMap<Mesh>::type> surface(
@@ -155,18 +164,22 @@ inline void split_in_halves_to(Face_clustering& fc, std::size_t k)
   }
 }
 
-// Whether the multilevel start is tried with the parameters `np`: the
-// default solver (the only one that starts from an exact start), no planar
-// panels, no panel tolerance and no vertex held (the coarse mesh would not
-// hold it).
-template <typename NP>
-bool multilevel_start_applies(const NP& np)
+// Whether the multilevel start is tried on `pm` with the parameters `np`:
+// the default solver (the only one that starts from an exact start), no
+// planar panels, no panel tolerance and no vertex held (the coarse mesh
+// would not hold it).
+template <typename PolygonMesh, typename NP>
+bool multilevel_start_applies(const PolygonMesh& pm, const NP& np)
 {
-  if constexpr(!parameters::is_default_parameter<NP, CGAL::internal_np::vertex_is_constrained_t>::value)
-    return false;
-  else
-    return parameter_or(np, internal_np::solver, defaults::solver) == CONSTRAINED_GAUSS_NEWTON &&
-           !parameter_or(np, internal_np::planar_tiles, defaults::planar_tiles) && panel_tolerance_of(np) == 0;
+  typedef typename boost::graph_traits<PolygonMesh>::vertex_descriptor vertex_descriptor;
+  const auto held = parameters::choose_parameter(
+    parameters::get_parameter(np, CGAL::internal_np::vertex_is_constrained),
+    CGAL::Static_boolean_property_map<vertex_descriptor, false>());
+  for(vertex_descriptor v : vertices(pm))
+    if(get(held, v))
+      return false;
+  return parameter_or(np, internal_np::solver, defaults::solver) == CONSTRAINED_GAUSS_NEWTON &&
+         !parameter_or(np, internal_np::planar_tiles, defaults::planar_tiles) && panel_tolerance_of(np) == 0;
 }
 
 // The pool entry of the prolongated clustering `fc` (by canonical index).
@@ -195,7 +208,7 @@ std::optional<typename State::Solution> multilevel_solution(State& state, const 
 {
   static_assert(tuning::multilevel_coarsest_faces <= large_mesh_faces, "a coarse solve must not recurse");
   const std::size_t k = state.model.number_of_clusters;
-  if(solver.number_of_faces() <= large_mesh_faces || !multilevel_start_applies(np))
+  if(solver.number_of_faces() <= large_mesh_faces || !multilevel_start_applies(state.mesh, np))
     return std::nullopt;
   Coarsening_levels<typename State::Point> levels = coarsening_levels(state, k);
   if(levels.levels.empty() || num_faces(levels.coarsest) > tuning::multilevel_coarsest_faces)

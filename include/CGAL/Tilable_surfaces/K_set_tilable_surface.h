@@ -19,8 +19,8 @@
 #include <CGAL/Tilable_surfaces/visitor.h>
 #include <CGAL/Tilable_surfaces/internal/Search/fidelity_search.h>
 #include <CGAL/Tilable_surfaces/internal/Search/refinement.h>
-#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/sweep_start.h>
+#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/internal/tilable_surface_parameters.h>
 #include <CGAL/Tilable_surfaces/internal/tilable_surface_state.h>
 

@@ -16,9 +16,9 @@
 /// `PROPER_RIGID_MOTIONS`), `vertex_point_map`, `face_index_map`.
 /// The number of clusters K is the largest id in `face_cluster_map` plus one.
 
-#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/cluster_panels.h>
 #include <CGAL/Tilable_surfaces/internal/canonical_face_order.h>
+#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 
 #include <string>
 #include <type_traits>
@@ -219,7 +219,7 @@ std::size_t retag_orientations(const PolygonMesh& pm, const CGAL_NP_CLASS& np)
 {
   internal::Editable_clustering<PolygonMesh, CGAL_NP_CLASS> e(pm, np);
   const double tau = internal::parameter_or(np, CGAL::Tilable_surfaces::internal_np::similarity_threshold,
-    defaults::similarity_threshold);
+                                            defaults::similarity_threshold);
   internal::retag_orientations(e.fc, pm, e.fim, e.faces.quads, internal::orientation_policy(np),
                                tau * mean_edge_length(pm, np));
   e.write(pm, np);

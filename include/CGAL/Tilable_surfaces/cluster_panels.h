@@ -8,7 +8,6 @@
 /// Clustering of the quads of a mesh into K S-quads (paper §3 and §5; user
 /// manual, section Clustering).
 
-#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/Edge_sharing_graph.h>
 #include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/exceptions.h>
@@ -17,6 +16,7 @@
 #include <CGAL/Tilable_surfaces/validation.h>
 #include <CGAL/Tilable_surfaces/visitor.h>
 #include <CGAL/Tilable_surfaces/internal/canonical_face_order.h>
+#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/internal/panel_tolerance.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/beam_search.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/candidate_generator.h>

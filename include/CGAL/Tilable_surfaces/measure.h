@@ -15,9 +15,9 @@
 #include <CGAL/Tilable_surfaces/internal/Measure/congruence.h>
 #include <CGAL/Tilable_surfaces/internal/Measure/self_intersections.h>
 #include <CGAL/Tilable_surfaces/internal/Tilable_problem.h>
-#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/congruence_quantities.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/fairness_operator.h>
+#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/internal/panel_tolerance.h>
 #include <CGAL/Tilable_surfaces/named_parameters.h>
 #include <CGAL/Tilable_surfaces/validation.h>

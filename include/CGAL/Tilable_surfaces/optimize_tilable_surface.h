@@ -8,7 +8,6 @@
 /// Moves the vertices of a clustered quad mesh so that the instances of every
 /// cluster become congruent (paper §4; user manual, section Optimization).
 
-#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/exceptions.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/Solver_settings.h>
@@ -18,6 +17,7 @@
 #include <CGAL/Tilable_surfaces/internal/Optimization/constrained_gauss_newton.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/displacement_estimate.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/fairness_operator.h>
+#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/internal/panel_tolerance.h>
 #include <CGAL/Tilable_surfaces/internal/tuning.h>
 #include <CGAL/Tilable_surfaces/measure.h>
@@ -144,10 +144,10 @@ struct Optimization_setup
     settings.weights.diagonal = parameter_or(np, TS_np::diagonal_weight, defaults::diagonal_weight);
     settings.weights.volume = parameter_or(np, TS_np::volume_weight, defaults::volume_weight);
     settings.congruence_tolerance = parameter_or(np, TS_np::congruence_tolerance, defaults::congruence_tolerance);
-    settings.convergence_tolerance = parameter_or(np, TS_np::convergence_tolerance,
-                                                      default_convergence_tolerance(solver));
-    settings.max_iterations = parameter_or(np, CGAL::internal_np::number_of_iterations,
-                                               default_number_of_iterations(solver));
+    settings.convergence_tolerance =
+      parameter_or(np, TS_np::convergence_tolerance, default_convergence_tolerance(solver));
+    settings.max_iterations =
+      parameter_or(np, CGAL::internal_np::number_of_iterations, default_number_of_iterations(solver));
 
     check_parameter(solver == CONSTRAINED_GAUSS_NEWTON || solver == PAPER_CONJUGATE_GRADIENT,
                     "unknown solver");

@@ -7,12 +7,12 @@
 // The mesh and its clustering turned into plain arrays indexed by vertex
 // index: the solvers and the measurements work on these, never on the mesh.
 
-#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/Edge_sharing_graph.h>
 #include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/exceptions.h>
 #include <CGAL/Tilable_surfaces/named_parameters.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
+#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 
 #include <CGAL/boost/graph/helpers.h>
 #include <CGAL/boost/graph/iterator.h>
@@ -199,8 +199,8 @@ Tilable_problem make_tilable_problem(const PolygonMesh& pm, const NamedParameter
   const auto fim = CGAL::get_initialized_face_index_map(pm, np);
 
   Tilable_problem problem;
-  problem.allow_mirror = parameter_or(np, TS_np::orientation_policy,
-                                                      defaults::orientation_policy) == ALLOW_MIRRORED_PANELS;
+  problem.allow_mirror =
+    parameter_or(np, TS_np::orientation_policy, defaults::orientation_policy) == ALLOW_MIRRORED_PANELS;
   problem.planar = parameter_or(np, TS_np::planar_tiles, defaults::planar_tiles);
   const Face_clustering clustering = read_face_clustering(pm, fim, cluster_map, orientation_map);
   problem.number_of_clusters = clustering.number_of_clusters;

@@ -10,10 +10,10 @@
 // Read and checked here only, so that every entry point refuses a bad T with
 // the same message before it touches the mesh.
 
-#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/exceptions.h>
 #include <CGAL/Tilable_surfaces/named_parameters.h>
+#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 
 #include <cmath>
 #include <sstream>

@@ -9,10 +9,10 @@
 // the object's index maps, points and clustering in front of the user's
 // parameters; and the concurrency its steps run with.
 
-#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/named_parameters.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 #include <CGAL/Tilable_surfaces/internal/Face_clustering.h>
+#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/internal/parallel_for.h>
 
 #include <boost/property_map/property_map.hpp>

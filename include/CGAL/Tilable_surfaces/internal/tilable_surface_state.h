@@ -10,7 +10,6 @@
 // candidate pool) and the last optimization result. The class offers the
 // steps; this keeps the data consistent between them.
 
-#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/Edge_sharing_graph.h>
 #include <CGAL/Tilable_surfaces/cluster_editing.h>
 #include <CGAL/Tilable_surfaces/cluster_panels.h>
@@ -22,6 +21,7 @@
 #include <CGAL/Tilable_surfaces/internal/Face_clustering.h>
 #include <CGAL/Tilable_surfaces/internal/Search/candidate_solver.h>
 #include <CGAL/Tilable_surfaces/internal/canonical_face_order.h>
+#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/internal/tilable_surface_parameters.h>
 
 #include <CGAL/Random.h>

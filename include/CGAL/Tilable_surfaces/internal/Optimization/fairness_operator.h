@@ -8,9 +8,9 @@
 // linear operator D on vertex positions: F_f(X) = ||D X||^2 (Frobenius, the
 // same rows for x, y and z).
 
-#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/feature_detection.h>
+#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/named_parameters.h>
 
 #include <CGAL/boost/graph/helpers.h>

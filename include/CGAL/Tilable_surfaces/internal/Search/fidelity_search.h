@@ -62,7 +62,6 @@
 // copies (Candidate_solver), keeps and restores results (Solution), and
 // reads the pool and writes the choice (Clustering_result).
 
-#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/Edge_sharing_graph.h>
 #include <CGAL/Tilable_surfaces/cluster_panels.h>
 #include <CGAL/Tilable_surfaces/defaults.h>
@@ -71,6 +70,7 @@
 #include <CGAL/Tilable_surfaces/internal/Clustering/candidate_generator.h>
 #include <CGAL/Tilable_surfaces/internal/Search/candidate_solver.h>
 #include <CGAL/Tilable_surfaces/internal/Search/multilevel_start.h>
+#include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/internal/parallel_for.h>
 #include <CGAL/Tilable_surfaces/internal/tilable_surface_parameters.h>
 #include <CGAL/Tilable_surfaces/internal/tuning.h>
@@ -97,7 +97,7 @@ template <typename NP>
 std::size_t optimized_candidate_count(const NP& np, std::size_t number_of_faces)
 {
   return parameter_or(np, internal_np::number_of_optimized_candidates,
-                                      default_number_of_optimized_candidates(number_of_faces));
+                      default_number_of_optimized_candidates(number_of_faces));
 }
 
 // Whether the fidelity search with the parameters `np` ends at an exact sweep
@@ -124,8 +124,8 @@ public:
     m_optimized = optimized_candidate_count(np, m_solver.number_of_faces());
     m_rounds = parameter_or(np, internal_np::number_of_improvement_rounds, defaults::number_of_improvement_rounds);
     m_timer.start();
-    m_user_iterations = parameter_or(np, CGAL::internal_np::number_of_iterations,
-                                         default_number_of_iterations(CONSTRAINED_GAUSS_NEWTON));
+    m_user_iterations =
+      parameter_or(np, CGAL::internal_np::number_of_iterations, default_number_of_iterations(CONSTRAINED_GAUSS_NEWTON));
   }
 
   // Runs the search; the surface holds the best result at the end, its
@@ -134,7 +134,7 @@ public:
   {
     solve_sweeps();
     solve_multilevel_start();
-    m_sweep_suffices = m_optimized == 0 && m_best_sweep && m_best_sweep->optimization.converged;
+    m_sweep_suffices = m_optimized == 0 && has_exact_start();
     if(!m_stopped && !m_sweep_suffices)
       rank_candidates();
     solve_ranked_candidates();
@@ -187,7 +187,7 @@ private:
   // Without an exact sweep: the multilevel start (multilevel_start.h), kept as a sweep is.
   void solve_multilevel_start()
   {
-    if(m_stopped || (m_best_sweep && m_best_sweep->optimization.converged))
+    if(m_stopped || has_exact_start())
       return;
     m_timer.reset();
     std::optional<Solution> solved = with_concurrency(
@@ -197,6 +197,9 @@ private:
     keep_exact_start(std::move(*solved), pool().size() - 1);
     m_visitor.phase("multilevel start", m_timer.time());
   }
+
+  // Whether a sweep or the multilevel start ended exact.
+  bool has_exact_start() const { return m_best_sweep && m_best_sweep->optimization.converged; }
 
   // A candidate `i` solved from its exact start becomes the fallback if it is better.
   void keep_exact_start(Solution solved, std::size_t i)

@@ -113,15 +113,8 @@ coarse_solution(Coarsening_levels<Point>& levels, const NP& np, Visitor& visitor
   Mesh& coarse = levels.coarsest;
   Coarse_solve_visitor<Visitor> coarse_visitor{&visitor};
   Visitor_ref coarse_ref(coarse_visitor);  // the type of make_k_set_tilable()'s: one instantiation for both
-  // The user's maps of the fine mesh do not apply to the coarse one.
-  const CGAL::internal_np::Param_not_found none;
-  const auto coarse_np = with_visitor(parameters::extend(np)
-                                       .number_of_tiles(int(levels.k))
-                                       .vertex_is_constrained_map(none)
-                                       .edge_is_constrained_map(none)
-                                       .edge_index_map(none)
-                                       .halfedge_index_map(none),
-                                     coarse_ref);
+  // The user's values; the user's maps are of the fine mesh, not of the coarse one.
+  const auto coarse_np = with_visitor(canonical_values(np).number_of_tiles(int(levels.k)), coarse_ref);
   try
   {
     K_set_tilable_surface<ConcurrencyTag, Mesh, typename CGAL::GetVertexPointMap<Mesh>::type> surface(

@@ -30,6 +30,7 @@
 
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 #include <CGAL/Tilable_surfaces/internal/Face_clustering.h>
+#include <CGAL/Tilable_surfaces/internal/Shape_analysis/quad_layout.h>
 
 #include <CGAL/Surface_mesh.h>
 #include <CGAL/number_utils.h>
@@ -39,7 +40,6 @@
 #include <array>
 #include <cstddef>
 #include <deque>
-#include <iterator>
 #include <optional>
 #include <vector>
 
@@ -103,18 +103,6 @@ public:
   }
 
 private:
-  // Only a coarse vertex can have this valence.
-  bool must_be_coarse(vertex_descriptor v) const
-  {
-    return bool(is_border(v, m_pm)) ? valence(v) != 3 : valence(v) != 4;
-  }
-
-  std::size_t valence(vertex_descriptor v) const
-  {
-    const auto around = CGAL::halfedges_around_target(halfedge(v, m_pm), m_pm);
-    return std::size_t(std::distance(around.begin(), around.end()));
-  }
-
   std::array<vertex_descriptor, 4> corners(face_descriptor f) const
   {
     std::array<vertex_descriptor, 4> v;
@@ -189,7 +177,7 @@ private:
   {
     std::deque<face_descriptor> seeds;
     for(vertex_descriptor v : vertices(m_pm))
-      if(must_be_coarse(v))
+      if(is_irregular_vertex(v, m_pm)) // only a coarse vertex can be irregular
       {
         if(!set_class(v, COARSE))
           return false;
@@ -252,7 +240,7 @@ private:
     for(vertex_descriptor v : vertices(m_pm))
     {
       const std::size_t i = get(m_vim, v);
-      if(m_class[i] == UNKNOWN || (m_class[i] == FACE && (bool(is_border(v, m_pm)) || valence(v) != 4)))
+      if(m_class[i] == UNKNOWN || (m_class[i] == FACE && (bool(is_border(v, m_pm)) || degree(v, m_pm) != 4)))
         return false;
       if(m_class[i] != EDGE)
         continue;

@@ -52,6 +52,14 @@ inline std::vector<std::vector<std::size_t> > patch_faces(const std::vector<std:
   return faces;
 }
 
+// Whether `v` is an irregular vertex of the quad mesh `pm`: valence other
+// than 4 inside, other than 3 on the border.
+template <typename PolygonMesh>
+bool is_irregular_vertex(typename boost::graph_traits<PolygonMesh>::vertex_descriptor v, const PolygonMesh& pm)
+{
+  return degree(v, pm) != (is_border(v, pm) ? 3u : 4u);
+}
+
 template <typename PolygonMesh, typename FaceIndexMap, typename VertexPointMap>
 class Quad_layout_builder
 {
@@ -100,10 +108,7 @@ private:
           cut(h);
   }
 
-  bool is_irregular(vertex_descriptor v) const
-  {
-    return degree(v, m_pm) != (is_border(v, m_pm) ? 3u : 4u);
-  }
+  bool is_irregular(vertex_descriptor v) const { return is_irregular_vertex(v, m_pm); }
   bool has_triangle(vertex_descriptor v) const
   {
     for(face_descriptor f : faces_around_target(halfedge(v, m_pm), m_pm))

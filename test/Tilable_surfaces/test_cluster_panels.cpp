@@ -661,6 +661,37 @@ TEST(ClusterQuads, BeamWidthAndSwitchesShapeTheCandidatePool)
   EXPECT_EQ(from_origin(no_strips, C::KMEANS), 1u);
 }
 
+// use_auto_merge: while more than tuning::beam_exhaustive_groups clusters
+// remain, the beam also proposes every pair of clusters whose S-quad edges
+// lie in the same 4 components of the edge-sharing graph, which keeps the
+// degree of flexibility. On planarizednormalized_six_quad (656 quads, more
+// initial clusters than that) at K = 26 these proposals enter the beam: its
+// configurations change, and its most flexible one has a larger DOF than
+// any without them (9 against 6 measured).
+TEST(ClusterQuads, AutoMergeProposalsKeepFlexibilityInTheBeam)
+{
+  Mesh m;
+  const std::string path = std::string(CGAL_TILABLE_SURFACES_TEST_DATA) + "/planarizednormalized_six_quad.obj";
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(path, m)) << path;
+  std::set<std::vector<std::size_t> > beam[2];
+  std::size_t most_flexible[2] = {0, 0};
+  for(bool auto_merge : {false, true})
+  {
+    const TS::Clustering_result r =
+      saddle_clustering(m, TS::parameters::number_of_tiles(26).use_auto_merge(auto_merge));
+    ASSERT_GT(r.number_of_initial_clusters, std::size_t(TS::internal::tuning::beam_exhaustive_groups));
+    for(const TS::Clustering_candidate& c : r.candidates)
+      if(c.origin == TS::Clustering_candidate::HIERARCHICAL)
+      {
+        beam[auto_merge].insert(c.face_cluster);
+        most_flexible[auto_merge] = (std::max)(most_flexible[auto_merge], c.degree_of_flexibility);
+      }
+    ASSERT_GT(beam[auto_merge].size(), 1u);
+  }
+  EXPECT_NE(beam[true], beam[false]);
+  EXPECT_GT(most_flexible[true], most_flexible[false]);
+}
+
 // exact_clustering_limit decides the path of AUTOMATIC_PATH: at or above
 // the number of faces the weights are the pairwise sums computed here; below
 // it they are the descriptor path's estimates, an upper bound of those sums.

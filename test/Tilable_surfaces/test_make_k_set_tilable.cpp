@@ -672,7 +672,7 @@ TEST(MakeKSetTilable, OneVisitorFollowsEveryStage)
   auto first = [&](const std::string& name) {
     return std::find(visitor.phases.begin(), visitor.phases.end(), name) - visitor.phases.begin();
   };
-  for(const char* stage : {"validation", "threshold clustering", "exact sweeps", "merges", "other candidates",
+  for(const char* stage : {"validation", "threshold clustering", "exact starts", "merges", "other candidates",
                            "orientations", "clustering", "sweep candidate", "displacement prediction",
                            "candidate optimization"})
     EXPECT_TRUE(has_phase(visitor, stage)) << stage;
@@ -856,9 +856,12 @@ TEST(MakeKSetTilable, AboveFiveThousandFacesNoPredictionIsMade)
 // and 5, so no sweep) subdivided 4 times, 9,728 quads at K = faces / 25, is
 // coarsened twice to 608 quads, whose result at K / 16 is prolongated. The
 // result comes from that start, is exact by an independent Umeyama fit and
-// stays within 1% of the diagonal by the PMP oracle (0.26% measured).
+// stays within 1% of the diagonal by the PMP oracle (0.26% measured). As an
+// exact sweep does, the start ends the clustering: no beam of merges, no
+// other candidate, and the coarse solve's iterations reach the visitor.
 TEST(MakeKSetTilable, AboveFiveThousandFacesARefinementStartsFromItsCoarseMesh)
 {
+  Recording_visitor visitor;
   Mesh mesh = read("cross_quad.off");
   CGAL::Subdivision_method_3::CatmullClark_subdivision(mesh, CGAL::parameters::number_of_iterations(4));
   ASSERT_EQ(num_faces(mesh), 9728u);
@@ -866,9 +869,18 @@ TEST(MakeKSetTilable, AboveFiveThousandFacesARefinementStartsFromItsCoarseMesh)
   auto cluster = mesh.add_property_map<Mesh::Face_index, int>("f:c", -1).first;
   auto orientation = mesh.add_property_map<Mesh::Face_index, int>("f:o", -1).first;
   const TS::K_set_tilable_result r = TS::make_k_set_tilable(
-    mesh, TSP::number_of_tiles(num_faces(mesh) / 25).face_cluster_map(cluster).face_orientation_map(orientation));
+    mesh, TSP::number_of_tiles(num_faces(mesh) / 25).face_cluster_map(cluster).face_orientation_map(orientation)
+            .visitor(std::ref(visitor)));
   ASSERT_TRUE(r.is_tilable());
   EXPECT_EQ(r.clustering.candidates[r.clustering.chosen_candidate].origin, TS::Clustering_candidate::MULTILEVEL);
+  EXPECT_TRUE(has_phase(visitor, "exact starts"));
+  EXPECT_TRUE(has_phase(visitor, "multilevel start"));
+  EXPECT_FALSE(has_phase(visitor, "merges"));
+  EXPECT_FALSE(has_phase(visitor, "other candidates"));
+  for(const TS::Clustering_candidate& candidate : r.clustering.candidates)
+    EXPECT_NE(candidate.origin, TS::Clustering_candidate::HIERARCHICAL);
+  // The coarse solve's and the polish's iterations, beyond the kept solve's.
+  EXPECT_GT(visitor.iterations, r.optimization.iterations + 1);
   EXPECT_LE(congruence_by_umeyama(mesh, cluster, orientation), 2e-6);
   EXPECT_LT(hausdorff_oracle::distances(mesh, input).hausdorff(), 0.01);
 }

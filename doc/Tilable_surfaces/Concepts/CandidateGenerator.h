@@ -26,7 +26,10 @@ indexed in the canonical face order:
   the generators, which draw from it in the order of the list;
 - `settings`: the clusterer's settings (the named parameters that switch
   generators on, the beam width, the callback that says when a candidate
-  with an exact start ends the search);
+  with an exact start ends the search, the multilevel start's hook);
+- `visitor`: the visitor of the clustering's caller while the exact starts
+  are made (the multilevel start's coarse solve reports its iterations to
+  it), else one that does nothing;
 - `has_triangles`, and for the beam the threshold clustering (`initial`,
   `initial_graph`), the score's references (`score`) and, on the exact path
   (`exact`), the n x n dissimilarities (`affinity`).
@@ -41,10 +44,12 @@ to measure it with (empty: each face's best match on its cluster's S-quad),
 optionally its own measures (`measured`, `weight`, `degree_of_flexibility`,
 `length_deviation`), and `has_exact_start`: the clustering is exact at the
 positions `sweep_start()` builds from the input, which the fidelity search
-solves it from.
+solves it from, or, with `start_is_exact`, at positions its generator built
+and checked (the multilevel start keeps them for the search).
 
 \cgalHasModel `Hierarchical_generator` (beam_search.h)
 \cgalHasModel `Sweep_generator` (sweep_candidates.h)
+\cgalHasModel `Multilevel_generator` (multilevel_generator.h)
 \cgalHasModel `Kmeans_generator` (kmeans_generator.h)
 \cgalHasModel `Quad_strip_generator` (strip_generator.h)
 \cgalHasModel `Grid_segment_generator` (segment_candidates.h)

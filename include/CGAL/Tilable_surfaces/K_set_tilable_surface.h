@@ -441,7 +441,8 @@ private:
     static_assert(!parameters::is_default_parameter<NamedParameters, internal_np::number_of_tiles_t>::value,
                   "the named parameter number_of_tiles is required");
     const auto cnp = internal::canonical_inputs(np);
-    m_state.start_clustering(cnp, internal::exact_sweep_ends_search(cnp, num_faces(m_state.mesh)));
+    m_state.start_clustering(cnp, internal::exact_sweep_ends_search(cnp, num_faces(m_state.mesh)),
+                             internal::multilevel_start_hook<ConcurrencyTag>(m_state, cnp));
   }
 
   // Runs f with the parallelism of ConcurrencyTag (the steps that compute).

@@ -264,8 +264,10 @@ public:
     };
     initialize(result);
     stage("threshold clustering");
+    m_visitor = Visitor_ref(visitor);
     const bool sweep_ends_search = make_exact_start_candidates(result);
-    stage("exact sweeps");
+    m_visitor = silent_visitor();
+    stage("exact starts");
     if(!sweep_ends_search)
     {
       merge_to_tile_count(result);
@@ -293,7 +295,8 @@ public:
   }
 
   // 2. The candidates solved first from their exact start
-  // (Exact_start_generators, the sweeps), made once, pooled by select().
+  // (Exact_start_generators: the sweeps, the multilevel start), made once,
+  // pooled by select().
   // Whether one ends the search (Clustering_settings::sweep_ends_search):
   // run() then makes no other, since none would be optimized, and the beam
   // of merges costs O(K^2) a step (a 100k-quad grid at K = 4,000: 245 s)
@@ -353,7 +356,7 @@ private:
     for(Generated_candidate& candidate : generator(context))
     {
       ends_search = ends_search || (candidate.has_exact_start && m_settings.sweep_ends_search &&
-                                    m_settings.sweep_ends_search(candidate.label));
+                                    (candidate.start_is_exact || m_settings.sweep_ends_search(candidate.label)));
       if(origin_traits(candidate.origin).solved_first_from_start)
         m_pooled_last.push_back(std::move(candidate));
       else
@@ -384,7 +387,8 @@ private:
   Context generator_context()
   {
     return Context{{}, m_pm, m_fim, m_vpm, m_quads, m_descriptors, m_k, m_settings.policy, m_settings.seed,
-                   m_random, m_settings, m_triangles, m_exact, m_affinity, m_init, m_initial_graph.get(), m_score};
+                   m_random, m_settings, m_triangles, m_exact, m_affinity, m_init, m_initial_graph.get(), m_score,
+                   m_visitor};
   }
 
   void compute_affinity()
@@ -536,6 +540,7 @@ private:
   const bool m_triangles;  // the mesh has triangles as well as quads (or only triangles)
   std::vector<Generated_candidate> m_pooled_last;  // solved first from their exact start: pooled after the others
   bool m_exact_start_made = false, m_sweep_ends_search = false;
+  Visitor_ref m_visitor = silent_visitor();  // run()'s, while it makes the exact starts
   bool m_exact = true;
   std::vector<double> m_affinity;  // n x n dissimilarities, exact path only
   Initial_clustering m_init;

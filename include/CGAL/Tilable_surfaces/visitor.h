@@ -41,13 +41,14 @@ struct Default_visitor
   }
 
   /// Called when a phase ends, with its duration in seconds:
-  /// `cluster_panels()`: "threshold clustering", "exact sweeps", "merges",
+  /// `cluster_panels()`: "threshold clustering", "exact starts" (the sweeps,
+  /// and in `K_set_tilable_surface::cluster()` the multilevel start, whose
+  /// coarse solve calls `iteration()` but not `phase()`), "merges",
   /// "other candidates", "orientations" (no "merges" and "other candidates"
-  /// when an exact sweep ends the search);
+  /// when an exact start ends the search);
   /// `K_set_tilable_surface::optimize_closest()`: "sweep candidate",
   /// "multilevel start" (above 5,000 faces, on a 2 x 2 refinement without an
-  /// exact sweep, when the coarse result is exact; the coarse solve calls
-  /// `iteration()` but not `phase()`), "displacement prediction",
+  /// exact sweep, when the coarse result is exact), "displacement prediction",
   /// "candidate optimization", "improvement round" (the last three only when
   /// the search goes beyond the exact starts, the first of them only up to
   /// 5,000 faces);
@@ -85,6 +86,13 @@ private:
   bool (*m_iteration)(void*, int, double, double);
   void (*m_phase)(void*, const char*, double);
 };
+
+// A visitor that lets every solve run and hears no phase.
+inline Visitor_ref silent_visitor()
+{
+  static Default_visitor silent;  // stateless
+  return Visitor_ref(silent);
+}
 
 // The visitor of `np`: the user's object if given as std::ref, else a copy of
 // it, or a Default_visitor.

@@ -30,7 +30,7 @@ BUDGET, BUDGET_KMAX = 0.32, 8
 # Round-off allowed between the program's measures and numpy's: relative, or absolute for
 # congruence errors, which are near 0.
 ROUND_OFF = 1e-9
-PHASES = {"validation", "clustering", "optimization", "threshold clustering", "exact sweeps", "merges",
+PHASES = {"validation", "clustering", "optimization", "threshold clustering", "exact starts", "merges",
           "other candidates", "orientations", "sweep candidate", "displacement prediction",
           "candidate optimization", "improvement round"}
 

@@ -20,6 +20,7 @@
 #include <CGAL/Tilable_surfaces/validation.h>
 #include <CGAL/Tilable_surfaces/internal/Face_clustering.h>
 #include <CGAL/Tilable_surfaces/internal/Search/candidate_solver.h>
+#include <CGAL/Tilable_surfaces/internal/Search/multilevel_start.h>
 #include <CGAL/Tilable_surfaces/internal/canonical_face_order.h>
 #include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/internal/tilable_surface_parameters.h>
@@ -76,6 +77,8 @@ struct Tilable_surface_state
   mutable bool summary_is_stale = false;
   Optimization_result optimization;  // of the last solve
   std::unique_ptr<Clusterer> clusterer;  // between initialize_clusters() and select_candidate()
+  // The exact start of the pool's MULTILEVEL candidate, if it has one.
+  std::optional<Multilevel_start<Point> > multilevel_start;
 
   // Checks `pm` (validate_panel_mesh()) and keeps the points of `point_map`
   // as the input.
@@ -155,9 +158,11 @@ struct Tilable_surface_state
   // What cluster() and initialize_clusters() start with: the parameters
   // checked and kept, the clusterer made, the description emptied. When
   // `sweep_ends_search`, the clusterer is told that an exact sweep
-  // clustering ends the fidelity search (exact_sweep_ends_search()).
+  // clustering ends the fidelity search (exact_sweep_ends_search()), as the
+  // multilevel start `multilevel_hook` does (multilevel_start_hook(), exact
+  // by construction) when it applies.
   template <typename NamedParameters>
-  void start_clustering(const NamedParameters& np, bool sweep_ends_search)
+  void start_clustering(const NamedParameters& np, bool sweep_ends_search, Multilevel_start_hook multilevel_hook)
   {
     const std::size_t k = tile_count(np, num_faces(mesh));
     write_points(input_points);
@@ -170,6 +175,8 @@ struct Tilable_surface_state
                                      const std::vector<std::size_t>& label) {
         return sweep_start(*pm, face_index, vertex_index, input, points, label).rows() > 0;
       };
+    settings.multilevel_start = std::move(multilevel_hook);
+    multilevel_start.reset();
     clusterer.reset(new Clusterer(mesh, input_faces, input_point_map(), mean_length, k, settings));
     clustering = Clustering_result();
     summary_is_stale = false;

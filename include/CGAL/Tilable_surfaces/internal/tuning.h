@@ -306,8 +306,6 @@ constexpr int sweep_polish_iterations = 10;
 // Multilevel start: a 2 x 2 refinement is coarsened while it has more faces than this, and is
 // solved only if it then has at most this many: the whole search there takes about a minute.
 constexpr std::size_t multilevel_coarsest_faces = 2000;
-// Iterations polishing the multilevel start: each costs 1 to 3 s at 10k faces.
-constexpr int multilevel_polish_iterations = 10;
 // Times the best result's iterations a later candidate may take: one slower is unlikely closer.
 constexpr int iteration_cap_factor = 3;
 // The least iteration cap of a later candidate, so that a quickly converged best does not starve it.

@@ -22,6 +22,7 @@
 #include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/Edge_sharing_graph.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
+#include <CGAL/Tilable_surfaces/visitor.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/beam_search.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/initial_clustering.h>
 
@@ -29,6 +30,7 @@
 
 #include <cstddef>
 #include <functional>
+#include <optional>
 #include <vector>
 
 namespace CGAL {
@@ -52,7 +54,7 @@ struct Candidate_origin_traits
                                   // "quad-strip", "grid-segment", "sweep", "patch-segment"
   bool selectable_by_score;       // may be cluster_panels()'s chosen candidate (false for sweeps)
   bool solved_first_from_start;   // the fidelity search solves it first, from the exact start its
-                                  // generator made, and does not rank it (true for sweeps only)
+                                  // generator made, and does not rank it (the sweeps, the multilevel start)
   std::size_t extra_quota_divisor;// after the ranked candidates, ceil(optimized / divisor) more of this
                                   // origin are optimized, in pool order (4 for grid segments; 0: none)
   bool ranked;                    // competes for the places of the ranking; if not, it is optimized
@@ -61,26 +63,6 @@ struct Candidate_origin_traits
 
 // The traits of the candidates of `origin` (defined in candidate_generators.h).
 inline const Candidate_origin_traits& origin_traits(Candidate_origins::Origin origin);
-
-// What cluster_panels() reads from its named parameters, besides K and the maps.
-struct Clustering_settings
-{
-  std::size_t width;          // number_of_candidates
-  double relative_threshold;  // similarity_threshold
-  double lambda, mu;          // flexibility_penalty, structure_penalty
-  bool use_kmeans, auto_merge, use_strips, use_segments;
-  bool separate_twists;       // not with planar_tiles: twist-separated variants join the pool
-  Clustering_path path;
-  std::size_t exact_limit;
-  Orientation_policy policy;
-  unsigned int seed;
-  double panel_tolerance = 0; // panel_tolerance, model units; 0: exact mode
-  // Set by K_set_tilable_surface::cluster() when an exact sweep would end
-  // its search (above large_mesh_faces, no other candidate to optimize):
-  // whether the sweep clustering (by canonical index) has an exact start.
-  // If one has, the generators after the sweeps' are not run.
-  std::function<bool(const std::vector<std::size_t>&)> sweep_ends_search;
-};
 
 // One candidate as a generator returns it. The clusterer measures it (weight,
 // DOF, length deviation), scores it and pools it.
@@ -104,6 +86,36 @@ struct Generated_candidate
   // they cost O(V) per candidate, and only K_set_tilable_surface has the
   // vertex indices.
   bool has_exact_start = false;
+  // The generator built the exact start and checked it (the multilevel start).
+  bool start_is_exact = false;
+};
+
+// The multilevel candidate at K clusters, if its start is exact
+// (multilevel_start_hook()); the coarse solve reports its iterations to the visitor.
+typedef std::function<std::optional<Generated_candidate>(std::size_t k, Visitor_ref visitor)> Multilevel_start_hook;
+
+// What cluster_panels() reads from its named parameters, besides K and the maps.
+struct Clustering_settings
+{
+  std::size_t width;          // number_of_candidates
+  double relative_threshold;  // similarity_threshold
+  double lambda, mu;          // flexibility_penalty, structure_penalty
+  bool use_kmeans, auto_merge, use_strips, use_segments;
+  bool separate_twists;       // not with planar_tiles: twist-separated variants join the pool
+  Clustering_path path;
+  std::size_t exact_limit;
+  Orientation_policy policy;
+  unsigned int seed;
+  double panel_tolerance = 0; // panel_tolerance, model units; 0: exact mode
+  // Set by K_set_tilable_surface::cluster() when an exact start would end
+  // its search (above large_mesh_faces, no other candidate to optimize):
+  // whether the sweep clustering (by canonical index) has an exact start.
+  // If one has, the generators after it are not run.
+  std::function<bool(const std::vector<std::size_t>&)> sweep_ends_search;
+  // Set by K_set_tilable_surface::cluster() on a mesh the multilevel start
+  // applies to (multilevel_start.h): the candidate it makes at K, reporting
+  // the coarse solve's iterations to the visitor, if that start is exact.
+  Multilevel_start_hook multilevel_start;
 };
 
 // Everything a generator reads. Faces are indexed by the canonical order
@@ -132,6 +144,7 @@ struct Generator_context : Candidate_origins
   const Initial_clustering& initial;             // the threshold clustering, split to at least K
   const Edge_sharing_graph<PolygonMesh>* initial_graph;
   const Configuration_score& score;
+  Visitor_ref visitor;                           // the clustering's caller's, or one that does nothing
 };
 
 } // namespace internal

@@ -16,6 +16,7 @@
 
 #include <CGAL/Tilable_surfaces/internal/Clustering/beam_search.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/kmeans_generator.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/multilevel_generator.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/patch_candidates.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/segment_candidates.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/strip_generator.h>
@@ -49,10 +50,10 @@ namespace Tilable_surfaces {
 /// `TOLERANCE_GROUPS`: with a `panel_tolerance`, the panels that already fit
 /// one mold within it grouped, when at most K groups are needed (user
 /// manual, section TS_Panel_tolerance).
-/// `MULTILEVEL`: made by no generator: above `large_mesh_faces`, on a mesh
-/// that is a 2 x 2 refinement, `K_set_tilable_surface::optimize_closest()`
-/// prolongates the exact result of a coarser mesh and pools it (user manual,
-/// section TS_Multilevel).
+/// `MULTILEVEL`: above `large_mesh_faces`, on a mesh that is a 2 x 2
+/// refinement and has no exact sweep, the exact result of a coarser mesh
+/// prolongated; `K_set_tilable_surface::optimize_closest()` solves it first,
+/// from there (user manual, section TS_Multilevel).
 enum Candidate_origins::Origin : int {
   HIERARCHICAL, KMEANS, QUAD_STRIPS, GRID_SEGMENTS, GRID_SWEEPS, TWIST_SEPARATED, PATCH_SEGMENTS, TOLERANCE_GROUPS,
   MULTILEVEL
@@ -73,7 +74,7 @@ inline const Candidate_origin_traits& origin_traits(Candidate_origins::Origin or
     {"twist-separated", true, false, tuning::twist_separated_extra_quota_divisor, false},
     {"patch-segment", true, false, tuning::patch_segment_extra_quota_divisor, true},
     {"tolerance-group", true, false, 0, true},
-    {"multilevel", false, false, 0, false}};
+    {"multilevel", false, true, 0, false}};
   return traits[origin];
 }
 
@@ -85,8 +86,9 @@ struct Generator_list
 
 // Step 2 of Panel_clusterer: the generators whose candidates are solved
 // first from their exact start, pooled after all the others; when one of
-// their candidates ends the search, no other generator runs.
-typedef Generator_list<Sweep_generator> Exact_start_generators;
+// their candidates ends the search, no other generator runs (the multilevel
+// start, then, is tried only where no sweep is exact).
+typedef Generator_list<Sweep_generator, Multilevel_generator> Exact_start_generators;
 
 // Step 3: the beam of merges down to K.
 typedef Generator_list<Hierarchical_generator> Merge_generators;

@@ -99,10 +99,18 @@ public:
 
   // Candidate `i` optimized from the input: what use_candidate(i) then
   // optimize() give. A candidate its origin solves from an exact start
-  // (origin_traits()) starts from the swept surface when it has one.
+  // (origin_traits()) starts from the swept surface when it has one, or
+  // from the multilevel start with its own orientations.
   template <typename NP>
   Solution solved_candidate(std::size_t i, const NP& np) const
   {
+    if(m_state.clustering.candidates[i].origin == Clustering_candidate::MULTILEVEL && m_state.multilevel_start)
+    {
+      const auto& multilevel = *m_state.multilevel_start;
+      const Point_matrix start = internal::read_points(
+        m_state.mesh, typename State::Input_point_map(multilevel.points.cbegin(), m_state.vim), m_state.vim);
+      return solved_model(multilevel.clustering, np, &start);
+    }
     std::size_t unused_dof;
     Face_clustering model = candidate_model(i, unused_dof);
     Point_matrix start;

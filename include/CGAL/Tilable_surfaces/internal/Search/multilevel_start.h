@@ -4,9 +4,9 @@
 #ifndef CGAL_TILABLE_SURFACES_INTERNAL_SEARCH_MULTILEVEL_START_H
 #define CGAL_TILABLE_SURFACES_INTERNAL_SEARCH_MULTILEVEL_START_H
 
-// The multilevel exact start of the fidelity search (user manual, section
-// TS_Multilevel): above large_mesh_faces a solve from the input costs 1 to
-// 3 s per iteration and stalls, so a mesh that is a 2 x 2 refinement
+// The multilevel exact start (user manual, section TS_Multilevel): above
+// large_mesh_faces a solve from the input costs 1 to 3 s per iteration and
+// stalls, so a mesh that is a 2 x 2 refinement
 // (quad_coarsening.h) is coarsened, level by level, until it has at most
 // tuning::multilevel_coarsest_faces faces (not tried if it cannot be
 // coarsened that far, or K / 4 per level would be 0 before: the whole
@@ -16,21 +16,20 @@
 // result is exact, its positions and clustering are prolongated back to the
 // input mesh, where they are exact with four clusters per coarse one. The
 // largest clusters are then split in halves, orientations kept, up to K.
-// The search polishes the result from there (a few Gauss-Newton iterations,
-// kept only if better) and pools it as a MULTILEVEL candidate, which is
-// treated as the sweeps are: a fallback the final result must beat, and
-// the end of the search when no other candidate is to be optimized.
+// K_set_tilable_surface::cluster() makes it through the clusterer's
+// Multilevel_generator, where it is a MULTILEVEL candidate treated as the
+// sweeps are: when it ends the search, the clusterer makes no other
+// candidate (the beam of merges alone costs O(K^2) a step); otherwise it
+// is a fallback the final result must beat.
 
-#include <CGAL/Tilable_surfaces/Edge_sharing_graph.h>
 #include <CGAL/Tilable_surfaces/cluster_panels.h>
 #include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/exceptions.h>
 #include <CGAL/Tilable_surfaces/visitor.h>
+#include <CGAL/Tilable_surfaces/internal/Clustering/candidate_generator.h>
 #include <CGAL/Tilable_surfaces/internal/Face_clustering.h>
-#include <CGAL/Tilable_surfaces/internal/Search/candidate_solver.h>
 #include <CGAL/Tilable_surfaces/internal/Shape_analysis/quad_coarsening.h>
 #include <CGAL/Tilable_surfaces/internal/Shape_analysis/quad_grid.h>
-#include <CGAL/Tilable_surfaces/internal/canonical_face_order.h>
 #include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
 #include <CGAL/Tilable_surfaces/internal/panel_tolerance.h>
 #include <CGAL/Tilable_surfaces/internal/tuning.h>
@@ -175,38 +174,27 @@ bool multilevel_start_applies(const PolygonMesh& pm, const NP& np)
          !parameter_or(np, internal_np::planar_tiles, defaults::planar_tiles) && panel_tolerance_of(np) == 0;
 }
 
-// The pool entry of the prolongated clustering `fc` (by canonical index).
-template <typename State>
-Clustering_candidate multilevel_candidate(const State& state, const Face_clustering& fc)
+// The exact start the multilevel start makes: its clustering (by canonical
+// index) and the positions where it is exact (by vertex index).
+template <typename Point>
+struct Multilevel_start
 {
-  Clustering_candidate candidate;
-  candidate.origin = Clustering_candidate::MULTILEVEL;
-  candidate.face_cluster = by_original_index(fc.label, state.input_faces.rank);
-  const auto graph =
-    edge_sharing_graph(state.mesh, state.fim, state.input_point_map(), fc.label, fc.orientation, fc.number_of_clusters);
-  candidate.degree_of_flexibility = graph.degree_of_flexibility();
-  candidate.length_deviation = graph.length_deviation();
-  return candidate;
-}
+  Face_clustering clustering;
+  std::vector<Point> points;
+};
 
-// The multilevel start of the input of `state` at the K of its clustering,
-// solved by `solver` for tuning::multilevel_polish_iterations (at most
-// `user_iterations`) from where it is exact, and pooled; nothing when it
-// does not apply, the mesh is no 2 x 2 refinement, or the coarse result is
-// not exact. The coarse solve (at most multilevel_coarsest_faces faces) is
-// below large_mesh_faces, so it makes no multilevel start of its own.
+// The multilevel candidate of the input of `state` at `k` clusters, solved
+// on the coarse mesh with the values of `np`, its iterations reported to
+// `visitor`; its start is kept in `state.multilevel_start`. Nothing when
+// the mesh is no 2 x 2 refinement down to multilevel_coarsest_faces or the
+// coarse result is not exact.
 template <typename ConcurrencyTag, typename State, typename NP>
-std::optional<typename State::Solution> multilevel_solution(State& state, const Candidate_solver<State>& solver,
-                                                            const NP& np, int user_iterations)
+std::optional<Generated_candidate> multilevel_candidate(State& state, std::size_t k, const NP& np,
+                                                        Visitor_ref visitor)
 {
-  static_assert(tuning::multilevel_coarsest_faces <= large_mesh_faces, "a coarse solve must not recurse");
-  const std::size_t k = state.model.number_of_clusters;
-  if(solver.number_of_faces() <= large_mesh_faces || !multilevel_start_applies(state.mesh, np))
-    return std::nullopt;
   Coarsening_levels<typename State::Point> levels = coarsening_levels(state, k);
   if(levels.levels.empty() || num_faces(levels.coarsest) > tuning::multilevel_coarsest_faces)
     return std::nullopt;
-  auto&& visitor = visitor_of(np);
   auto coarse = coarse_solution<ConcurrencyTag>(levels, np, visitor);
   if(!coarse)
     return std::nullopt;
@@ -218,14 +206,28 @@ std::optional<typename State::Solution> multilevel_solution(State& state, const 
   Face_clustering& fc = coarse->second;
   split_in_halves_to(fc, k);
   relabel_by_first_face(fc.label);
-  std::vector<Clustering_candidate>& pool = state.clustering.candidates;
-  while(!pool.empty() && pool.back().origin == Clustering_candidate::MULTILEVEL)
-    pool.pop_back(); // of an earlier search on this clustering
-  pool.push_back(multilevel_candidate(state, fc));
-  const Point_matrix start =
-    read_points(state.mesh, typename State::Input_point_map(coarse->first.cbegin(), state.vim), state.vim);
-  return solver.solved_model(
-    std::move(fc), np.number_of_iterations((std::min)(user_iterations, tuning::multilevel_polish_iterations)), &start);
+  Generated_candidate candidate;
+  candidate.origin = Candidate_origins::MULTILEVEL;
+  candidate.label = fc.label;
+  candidate.orientation = fc.orientation;
+  candidate.has_exact_start = candidate.start_is_exact = true;
+  state.multilevel_start = Multilevel_start<typename State::Point>{std::move(fc), std::move(coarse->first)};
+  return candidate;
+}
+
+// The hook Clustering_settings::multilevel_start for the input of `state`
+// clustered with the parameters `np`; none (an empty function) when the
+// start does not apply. The coarse solve (at most multilevel_coarsest_faces
+// faces) is below large_mesh_faces, so it makes no multilevel start of its own.
+template <typename ConcurrencyTag, typename State, typename NP>
+Multilevel_start_hook multilevel_start_hook(State& state, const NP& np)
+{
+  static_assert(tuning::multilevel_coarsest_faces <= large_mesh_faces, "a coarse solve must not recurse");
+  if(num_faces(state.mesh) <= large_mesh_faces || !multilevel_start_applies(state.mesh, np))
+    return {};
+  return [&state, values = canonical_values(np)](std::size_t k, Visitor_ref visitor) {
+    return multilevel_candidate<ConcurrencyTag>(state, k, values, visitor);
+  };
 }
 
 } // namespace internal

@@ -13,6 +13,7 @@
 #include <CGAL/Tilable_surfaces/cluster_editing.h>
 #include <CGAL/Tilable_surfaces/cluster_panels.h>
 #include <CGAL/Tilable_surfaces/optimize_tilable_surface.h>
+#include <CGAL/Tilable_surfaces/visitor.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/candidate_generator.h>
 #include <CGAL/Tilable_surfaces/internal/Face_clustering.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/sweep_start.h>
@@ -44,23 +45,30 @@ struct Solution
   Optimization_result optimization;
 };
 
-// Forwards to a visitor under a lock: two solves may call it at once.
-template <typename Visitor>
-struct Locked_visitor
+// Forwards to a visitor under a lock: two solves may call it at once. The
+// solves see it through a Visitor_ref, the visitor type of every other
+// solve, so that they share one instantiation.
+class Locked_visitor
 {
-  Visitor* visitor;
-  std::mutex* mutex;
+public:
+  template <typename Visitor>
+  Locked_visitor(Visitor& visitor, std::mutex& mutex) : m_visitor(visitor), m_mutex(&mutex)
+  {}
 
   bool iteration(int iteration, double congruence_error, double objective)
   {
-    std::lock_guard<std::mutex> lock(*mutex);
-    return visitor->iteration(iteration, congruence_error, objective);
+    std::lock_guard<std::mutex> lock(*m_mutex);
+    return m_visitor.iteration(iteration, congruence_error, objective);
   }
   void phase(const char* name, double seconds)
   {
-    std::lock_guard<std::mutex> lock(*mutex);
-    visitor->phase(name, seconds);
+    std::lock_guard<std::mutex> lock(*m_mutex);
+    m_visitor.phase(name, seconds);
   }
+
+private:
+  Visitor_ref m_visitor;
+  std::mutex* m_mutex;
 };
 
 // The solves and predictions of clusterings of the input of a

@@ -341,8 +341,9 @@ private:
     ahead.solution.reset();
     auto&& visitor = internal::visitor_of(m_np);
     std::mutex mutex;
-    Locked_visitor<std::remove_reference_t<decltype(visitor)> > locked{&visitor, &mutex};
-    const auto solve_np = internal::with_visitor(m_np, locked).number_of_iterations(cap);
+    Locked_visitor locked(visitor, mutex);
+    Visitor_ref shared(locked);
+    const auto solve_np = internal::with_visitor(m_np, shared).number_of_iterations(cap);
     const bool solve_ahead =
       r > 0 && r + 1 < m_ranked.size() && with_concurrency([] { return internal::several_threads_available(); });
     std::vector<Solution> solved(solve_ahead ? 2 : 1);

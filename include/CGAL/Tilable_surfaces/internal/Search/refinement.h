@@ -21,7 +21,6 @@
 #include <cstddef>
 #include <mutex>
 #include <string>
-#include <type_traits>
 #include <utility>
 #include <vector>
 
@@ -49,8 +48,9 @@ typename Solver::Solution refined_solution(const Solver& solver, const Face_clus
   const std::size_t ways = kept.orientation == retagged.orientation ? 1 : 2;
   auto&& visitor = visitor_of(np);
   std::mutex mutex;
-  Locked_visitor<std::remove_reference_t<decltype(visitor)> > locked{&visitor, &mutex};
-  const auto solve_np = with_visitor(np, locked);
+  Locked_visitor locked(visitor, mutex);
+  Visitor_ref shared(locked);
+  const auto solve_np = with_visitor(np, shared);
   std::vector<Solution> solved(ways);
   with_concurrency<ConcurrencyTag>([&] {
     parallel_for(ways, [&](std::size_t j) {

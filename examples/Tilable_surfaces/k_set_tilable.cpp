@@ -34,6 +34,7 @@
 #include <CGAL/Tilable_surfaces/IO/write_tile_count_curve.h>
 #include <CGAL/Tilable_surfaces/k_set_tilable_curve.h>
 #include <CGAL/Tilable_surfaces/make_k_set_tilable.h>
+#include <CGAL/Tilable_surfaces/mold_count_bounds.h>
 
 #include <boost/program_options.hpp>
 
@@ -520,16 +521,34 @@ std::size_t optimized_candidates(const Options& o, const Mesh& mesh)
 
 // The JSON report: what the library measured, and the input and parameters.
 nlohmann::json report_json(const Options& o, const TS::K_set_tilable_result& result, const Mesh& input,
-                           std::size_t optimized, bool time_limit_reached, double seconds)
+                           const TS::Mold_count_bounds& bounds, std::size_t optimized, bool time_limit_reached,
+                           double seconds)
 {
   nlohmann::json report = TS::IO::tilability_report_json(result);
   report["input"] = {{"file", o.input},
                      {"vertices", input.number_of_vertices()},
-                     {"faces", input.number_of_faces()}};
+                     {"faces", input.number_of_faces()},
+                     {"mold_count_bounds", {{"unstructured_molds", bounds.unstructured_molds},
+                                            {"grid_patches", bounds.grid_patches},
+                                            {"patch_sweep_molds", bounds.patch_sweep_molds}}}};
   report["parameters"] = parameters_json(o, optimized);
   report["time_limit_reached"] = time_limit_reached;
   report["time_seconds"]["total_with_io"] = seconds;
   return report;
+}
+
+// Says when K is below both mold counts of the input: unless its panels
+// repeat, an exact result is then far from it, or is not found.
+void warn_of_few_molds(const Options& o, const TS::Mold_count_bounds& bounds)
+{
+  if(o.quiet || !o.sweep.empty() || o.max_deviation >= 0 ||
+     std::size_t(o.k) >= (std::min)(bounds.unstructured_molds, bounds.patch_sweep_molds))
+    return;
+  std::cerr << "[k_set_tilable] note: K = " << o.k << " is below the " << bounds.patch_sweep_molds
+            << " molds of a sweep of each grid patch alone (" << bounds.grid_patches << " patches) and the "
+            << bounds.unstructured_molds << " a clustering without structure needs (user manual, \"How many molds "
+            << "a mesh needs\"): unless its panels repeat, an exact result is far from the input or is not "
+               "found; --max-deviation D finds the smallest K within D\n";
 }
 
 // With a panel tolerance, the certificate: every panel within T of its mold,
@@ -626,6 +645,9 @@ int run_on(const Options& o, Mesh& mesh, const Mesh& input, const TS::IO::HTML_v
                                          : "K = " + std::to_string(o.k))
               << (o.panel_tolerance > 0 ? ", panel tolerance " + std::to_string(o.panel_tolerance) : "") << "\n";
 
+  const TS::Mold_count_bounds bounds = TS::mold_count_bounds(mesh);
+  warn_of_few_molds(o, bounds);
+
   auto cluster = mesh.add_property_map<Mesh::Face_index, int>("f:ts_cluster", 0).first;
   auto orientation = mesh.add_property_map<Mesh::Face_index, int>("f:ts_orientation", 0).first;
   auto fixed = mesh.add_property_map<Mesh::Vertex_index, bool>("v:ts_fixed", false).first;
@@ -707,7 +729,7 @@ int run_on(const Options& o, Mesh& mesh, const Mesh& input, const TS::IO::HTML_v
   if(!o.curve.empty())
     files.add(o.curve, [&](std::ostream& out) { return TS::IO::write_tile_count_curve_CSV(out, result.trials); });
   const nlohmann::json report = o.report.empty() && o.html.empty() ? nlohmann::json()
-    : report_json(o, result, input, optimized_candidates(o, mesh), progress.stopped, timer.time());
+    : report_json(o, result, input, bounds, optimized_candidates(o, mesh), progress.stopped, timer.time());
   if(!o.report.empty())
     files.add(o.report, [&](std::ostream& out) {
       out << std::setw(2) << report << "\n";

@@ -188,11 +188,12 @@ TEST(CommandLine, DeBeersGinzaEndToEnd) { check_run_on("de_beers_ginza.off", 48,
 
 TEST(CommandLine, SwissReTowerEndToEnd) { check_run_on("swiss_re.off", 24, "json"); }
 
-// 6-sub-lifted at K = 7 has no exact solution near the input: its hierarchical
-// candidates stall near 5e-2, its patch segments near 6.7e-6 (results.md,
-// Known limits 2). The panels of the PLY must not fit their molds within the
-// tolerance 1e-6, and the program must say that the solver stalled, not that
-// it ran out of iterations (the default gives it 300), after repair rounds.
+// 6-sub-lifted at K = 7 has no exact solution near the input (K is below both
+// of its mold counts): its hierarchical candidates stall near 5e-2, its patch
+// segments near 6.7e-6 (results.md, "Known limits"). The panels of the PLY
+// must not fit their molds within the tolerance 1e-6, and the program must
+// say that the solver stalled, not that it ran out of iterations (the default
+// gives it 300), after repair rounds.
 TEST(CommandLine, SaysWhenNoExactSolutionIsNearTheInput)
 {
   Checked_run checked;
@@ -203,6 +204,16 @@ TEST(CommandLine, SaysWhenNoExactSolutionIsNearTheInput)
   EXPECT_LT(checked.report["optimization"]["iterations"].get<int>(), 300);
   EXPECT_GE(checked.report["clustering"]["edit_rounds"].get<int>(), 1);
   EXPECT_NE(checked.output.find("no exact solution near the input"), std::string::npos) << checked.output;
+  // K = 7 is below both mold counts, and the program says so first. Without
+  // structure: the smallest K with 6 (F - K) <= 3 V - 6, from the mesh's counts.
+  Mesh input;
+  ASSERT_TRUE(CGAL::IO::read_polygon_mesh(data_dir + "/6-sub-lifted.obj", input));
+  const long long F = (long long)num_faces(input), V = (long long)num_vertices(input);
+  const nlohmann::json& bounds = checked.report["input"]["mold_count_bounds"];
+  EXPECT_EQ(bounds["unstructured_molds"].get<long long>(), (6 * F - (3 * V - 6) + 5) / 6);
+  EXPECT_GT(bounds["patch_sweep_molds"].get<int>(), 7);
+  EXPECT_LT(checked.output.find("note: K = 7 is below the "), checked.output.find("clustering done"))
+    << checked.output;
 }
 
 // Within a panel tolerance T far below where its clusterings stall, the same

@@ -1,5 +1,5 @@
-// The quad layout (internal/Shape_analysis/quad_layout.h) on meshes whose
-// patches are counted by hand, and the patch-segment candidates
+// The quad layout (internal/Shape_analysis/quad_layout.h) and the mold counts
+// (mold_count_bounds.h) on meshes whose patches are counted by hand, and the patch-segment candidates
 // (internal/Clustering/patch_candidates.h) on a mesh that is not one grid.
 
 #include "grid_mesh.h"
@@ -7,6 +7,7 @@
 
 #include <CGAL/Tilable_surfaces/internal/Clustering/patch_candidates.h>
 #include <CGAL/Tilable_surfaces/internal/Shape_analysis/quad_layout.h>
+#include <CGAL/Tilable_surfaces/mold_count_bounds.h>
 
 #include <gtest/gtest.h>
 
@@ -322,6 +323,46 @@ TEST(PatchSegments, KClustersWithoutMixedTwists)
       }
     }
   }
+}
+
+// The mold counts by hand. Unstructured: the first K with 6 (quads - K) +
+// 3 triangles <= 3 V - 6, molds going to quads first (6 equations each),
+// then to triangles (3 each). Patch sweeps: min(rows, columns) per grid patch.
+TEST(MoldCountBounds, CountedByHandOnAGridABallAndAnOctahedron)
+{
+  // 5 x 3 quads, 24 vertices: 90 equations against 66 coordinates, 4 molds; one patch, 3 columns.
+  const TS::Mold_count_bounds grid_bounds = TS::mold_count_bounds(grid<Mesh>(5, 3));
+  EXPECT_EQ(grid_bounds.unstructured_molds, 4u);
+  EXPECT_EQ(grid_bounds.grid_patches, 1u);
+  EXPECT_EQ(grid_bounds.patch_sweep_molds, 3u);
+  // 96 quads, 98 vertices (closed, genus 0): 576 against 288, 48 molds, half the quads; 6 patches of 4 x 4.
+  const TS::Mold_count_bounds ball_bounds = TS::mold_count_bounds(quad_ball(4));
+  EXPECT_EQ(ball_bounds.unstructured_molds, 48u);
+  EXPECT_EQ(ball_bounds.grid_patches, 6u);
+  EXPECT_EQ(ball_bounds.patch_sweep_molds, 24u);
+  // 8 triangles, 6 vertices: 24 against 12, 4 triangle molds; no grid, one mold per face.
+  Mesh octahedron;
+  std::vector<Vertex> v;
+  for(int axis = 0; axis < 3; ++axis)
+    for(int sign : {1, -1})
+    {
+      double x[3] = {0, 0, 0};
+      x[axis] = sign;
+      v.push_back(octahedron.add_vertex(Point(x[0], x[1], x[2])));
+    }
+  for(int a : {0, 1})
+    for(int b : {2, 3})
+      for(int c : {4, 5})
+      {
+        const bool positive = (a == 0) == (b == 2) ? c == 4 : c == 5;  // outward, right-handed
+        if(positive) octahedron.add_face(v[a], v[b], v[c]);
+        else octahedron.add_face(v[a], v[c], v[b]);
+      }
+  ASSERT_EQ(num_faces(octahedron), 8u);
+  const TS::Mold_count_bounds octahedron_bounds = TS::mold_count_bounds(octahedron);
+  EXPECT_EQ(octahedron_bounds.unstructured_molds, 4u);
+  EXPECT_EQ(octahedron_bounds.grid_patches, 0u);
+  EXPECT_EQ(octahedron_bounds.patch_sweep_molds, 8u);
 }
 
 } // namespace test_quad_layout_unit

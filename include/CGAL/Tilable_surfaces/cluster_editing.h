@@ -16,6 +16,7 @@
 /// `PROPER_RIGID_MOTIONS`), `vertex_point_map`, `face_index_map`.
 /// The number of clusters K is the largest id in `face_cluster_map` plus one.
 
+#include <CGAL/Tilable_surfaces/internal/config.h>
 #include <CGAL/Tilable_surfaces/cluster_panels.h>
 #include <CGAL/Tilable_surfaces/internal/canonical_face_order.h>
 #include <CGAL/Tilable_surfaces/internal/canonical_parameters.h>
@@ -40,64 +41,14 @@ Orientation_policy orientation_policy(const NP& np)
 
 // Merges cluster max(a, b) into min(a, b); returns the correspondence between
 // their S-quads, which the edge-sharing graph needs.
-inline Panel_orientation merge_clusters(Face_clustering& fc, const std::vector<Panel>& quads, std::size_t a,
-                                       std::size_t b, Orientation_policy policy)
-{
-  fc.check_cluster(a);
-  fc.check_cluster(b);
-  if(a == b)
-    throw Invalid_input("cannot merge cluster " + std::to_string(a) + " with itself",
-                        Invalid_input::PARAMETER);
-  const std::size_t kept = (std::min)(a, b), removed = (std::max)(a, b);
-  const std::vector<std::vector<std::size_t> > members = cluster_members(fc.label, fc.number_of_clusters);
-  const int n = members[kept].empty() ? 4 : quads[members[kept].front()].size();
-  if(!members[removed].empty() && quads[members[removed].front()].size() != n)
-    throw Invalid_input("cannot merge cluster " + std::to_string(removed) + " into cluster " +
-                        std::to_string(kept) + ": a quad cluster and a triangle cluster",
-                        Invalid_input::PARAMETER);
-  auto s_quad = [&](std::size_t c) {
-    std::vector<Panel_orientation> o;
-    for(std::size_t f : members[c]) o.push_back(fc.orientation[f]);
-    return procrustes_mean(quads, members[c], policy, &o);
-  };
-  const Panel_orientation correspondence = fast_best_match(s_quad(kept), s_quad(removed), policy).orientation;
-  for(std::size_t f : members[removed])
-  {
-    fc.orientation[f] = compose(fc.orientation[f], correspondence, n);
-    fc.label[f] = kept;
-  }
-  for(std::size_t& l : fc.label)
-    if(l > removed) --l;
-  --fc.number_of_clusters;
-  return correspondence;
-}
+CGAL_TILABLE_SURFACES_INLINE
+Panel_orientation merge_clusters(Face_clustering& fc, const std::vector<Panel>& quads, std::size_t a,
+                                std::size_t b, Orientation_policy policy);
 
 // Splits cluster `c` in two; the second part gets the id K.
-inline void split_cluster(Face_clustering& fc, const std::vector<Panel>& quads, std::size_t c,
-                          Orientation_policy policy, CGAL::Random& random)
-{
-  fc.check_cluster(c);
-  const std::vector<std::size_t> members = cluster_members(fc.label, fc.number_of_clusters)[c];
-  if(members.size() < 2)
-    throw Invalid_input("cluster " + std::to_string(c) + " has a single face, it cannot be split",
-                        Invalid_input::PARAMETER);
-  std::vector<Quad_descriptor> descriptors(quads.size());
-  for(std::size_t f : members) descriptors[f] = shape_descriptor(quads[f]);
-  const std::vector<bool> second = split_in_two(quads, descriptors, members, policy, random);
-  std::vector<std::size_t> part[2];
-  for(std::size_t i = 0; i < second.size(); ++i)
-  {
-    part[second[i] ? 1 : 0].push_back(members[i]);
-    if(second[i]) fc.label[members[i]] = fc.number_of_clusters;
-  }
-  ++fc.number_of_clusters;
-  for(const std::vector<std::size_t>& p : part)
-  {
-    const Panel s_quad = procrustes_mean(quads, p, policy);
-    for(std::size_t f : p)
-      fc.orientation[f] = fast_best_match(s_quad, quads[f], policy).orientation;
-  }
-}
+CGAL_TILABLE_SURFACES_INLINE
+void split_cluster(Face_clustering& fc, const std::vector<Panel>& quads, std::size_t c,
+                   Orientation_policy policy, CGAL::Random& random);
 
 // Re-tags every face against its cluster's Procrustes mean, near-ties within
 // `tolerance` chosen for flexibility.
@@ -228,5 +179,9 @@ std::size_t retag_orientations(const PolygonMesh& pm, const CGAL_NP_CLASS& np)
 
 } // namespace Tilable_surfaces
 } // namespace CGAL
+
+#ifndef CGAL_TILABLE_SURFACES_COMPILED_LIBRARY
+#include <CGAL/Tilable_surfaces/cluster_editing_impl.h>
+#endif
 
 #endif // CGAL_TILABLE_SURFACES_CLUSTER_EDITING_H

@@ -8,6 +8,7 @@
 /// Moves the vertices of a clustered quad mesh so that the instances of every
 /// cluster become congruent (paper §4; user manual, section Optimization).
 
+#include <CGAL/Tilable_surfaces/internal/config.h>
 #include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/exceptions.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/Solver_settings.h>
@@ -87,18 +88,8 @@ namespace internal {
 // does not cross itself (it could not be built otherwise), then closer to
 // the input (symmetric Hausdorff distance), or, neither being tilable, the
 // smaller congruence error.
-inline bool is_better(const Optimization_result& a, const Optimization_result& b)
-{
-  if(a.converged != b.converged)
-    return a.converged;
-  if(!a.converged)
-    return a.measure.congruence_error < b.measure.congruence_error;
-  const bool a_crosses = a.measure.self_intersecting_face_pairs > 0,
-             b_crosses = b.measure.self_intersecting_face_pairs > 0;
-  if(a_crosses != b_crosses)
-    return b_crosses;
-  return a.measure.hausdorff_distance < b.measure.hausdorff_distance;
-}
+CGAL_TILABLE_SURFACES_INLINE
+bool is_better(const Optimization_result& a, const Optimization_result& b);
 
 inline void check_parameter(bool ok, const std::string& what)
 {
@@ -200,61 +191,24 @@ private:
 // The positions `start` (by vertex index, in mesh units) normalized like the
 // solver's input, the fixed vertices at their input positions, in `S`; true
 // when the clustering is exact there, so the default solver may start there.
-inline bool normalized_exact_start(const Optimization_setup& setup, const Point_matrix& start, Point_matrix& S)
-{
-  S = (start.rowwise() - setup.centre) / setup.scale;
-  for(Eigen::Index i = 0; i < S.rows(); ++i)
-    if(setup.fixed[std::size_t(i)])
-      S.row(i) = setup.X0.row(i);
-  return congruence_error(setup.problem, S) <= setup.settings.congruence_tolerance;
-}
+CGAL_TILABLE_SURFACES_INLINE
+bool normalized_exact_start(const Optimization_setup& setup, const Point_matrix& start, Point_matrix& S);
 
 // The input points moved by the displacement of the normalized positions Y
 // from X0, scaled back to mesh units; fixed vertices keep their input point.
-inline Point_matrix moved_points(const Optimization_setup& setup, const Point_matrix& Y)
-{
-  Point_matrix moved = setup.problem.points;
-  for(std::size_t i = 0; i < setup.fixed.size(); ++i)
-    if(!setup.fixed[i])
-      moved.row(Eigen::Index(i)) += setup.scale * (Y.row(Eigen::Index(i)) - setup.X0.row(Eigen::Index(i)));
-  return moved;
-}
+CGAL_TILABLE_SURFACES_INLINE
+Point_matrix moved_points(const Optimization_setup& setup, const Point_matrix& Y);
 
 // Measures the normalized positions Y against the input into `result`, and
 // whether they meet the tolerance.
-inline void measure_result(const Optimization_setup& setup, const Point_matrix& Y, Optimization_result& result)
-{
-  const Tilable_problem& problem = setup.problem;
-  const double tolerance = setup.settings.congruence_tolerance;
-  result.measure = measure_tilability(problem, setup.D, problem.points, moved_points(setup, Y), setup.panel_tolerance);
-  use_mesh_face_order(result.measure, setup.mesh_face_index);
-  result.converged = setup.panel_tolerance > 0
-                       ? result.measure.within_panel_tolerance()
-                       : result.measure.congruence_error <= tolerance &&
-                           (!problem.planar || result.measure.planarity_error <= tolerance);
-}
+CGAL_TILABLE_SURFACES_INLINE
+void measure_result(const Optimization_setup& setup, const Point_matrix& Y, Optimization_result& result);
 
 // Measures the solver's result X; with `compare_with_start`, also the exact
 // start S, and keeps in X, and in `result`, the better of the two.
-inline void measure_better_result(const Optimization_setup& setup, const Point_matrix& S,
-                                  bool compare_with_start, Point_matrix& X, Optimization_result& result)
-{
-  measure_result(setup, X, result);
-  if(!compare_with_start)
-    return;
-  const Optimization_result solved = result;
-  measure_result(setup, S, result);
-  if(is_better(solved, result))
-  {
-    result.measure = solved.measure;
-    result.converged = solved.converged;
-  }
-  else
-  {
-    X = S;
-    result.energy = paper_energy(setup.problem, setup.D, X, setup.X0);
-  }
-}
+CGAL_TILABLE_SURFACES_INLINE
+void measure_better_result(const Optimization_setup& setup, const Point_matrix& S,
+                           bool compare_with_start, Point_matrix& X, Optimization_result& result);
 
 // Writes back the points of the vertices that moved, as their input position
 // plus the displacement in mesh units; fixed vertices are never written.
@@ -467,5 +421,9 @@ Displacement_prediction predict_displacement(const PolygonMesh& pm, const CGAL_N
 
 } // namespace Tilable_surfaces
 } // namespace CGAL
+
+#ifndef CGAL_TILABLE_SURFACES_COMPILED_LIBRARY
+#include <CGAL/Tilable_surfaces/optimize_tilable_surface_impl.h>
+#endif
 
 #endif // CGAL_TILABLE_SURFACES_OPTIMIZE_TILABLE_SURFACE_H

@@ -13,6 +13,7 @@
 /// All computations are done in double precision with Eigen, whatever the
 /// kernel of the mesh: the quantities are measurements, not predicates.
 
+#include <CGAL/Tilable_surfaces/internal/config.h>
 #include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/exceptions.h>
 #include <CGAL/Tilable_surfaces/named_parameters.h>
@@ -212,13 +213,8 @@ private:
 /// \ingroup PkgTilableSurfacesRef
 /// The composition of two correspondences between panels of `n` corners:
 /// `compose(a, b, n)(i, n) == a(b(i, n), n)`.
-inline Panel_orientation compose(const Panel_orientation& a, const Panel_orientation& b, int n = 4)
-{
-  // Both maps are determined by the image of 0 and the direction.
-  const int image_of_zero = a(b(0, n), n);
-  const bool reversed = a.is_reversed() != b.is_reversed();
-  return Panel_orientation(reversed ? 4 + image_of_zero : image_of_zero);
-}
+CGAL_TILABLE_SURFACES_INLINE
+Panel_orientation compose(const Panel_orientation& a, const Panel_orientation& b, int n = 4);
 
 /// \ingroup PkgTilableSurfacesRef
 /// The composition of two quad correspondences, `compose(a, b, 4)`.
@@ -240,14 +236,8 @@ inline Panel reoriented(const Panel& q, Panel_orientation o)
 /// \ingroup PkgTilableSurfacesRef
 /// Lengths of the edges t0t1, t1t2, t2t3, t3t0 of a quad; of a triangle, of
 /// t0t1, t1t2, t2t0, then 0.
-inline std::array<double, 4> edge_lengths(const Panel& q)
-{
-  const int n = q.size();
-  std::array<double, 4> r{{0, 0, 0, 0}};
-  for(int k = 0; k < n; ++k)
-    r[std::size_t(k)] = (q[(k + 1) % n] - q[k]).norm();
-  return r;
-}
+CGAL_TILABLE_SURFACES_INLINE
+std::array<double, 4> edge_lengths(const Panel& q);
 
 /// \ingroup PkgTilableSurfacesRef
 /// Lengths of the diagonals t0t2 and t1t3 of a quad; 0 and 0 for a triangle.
@@ -276,51 +266,23 @@ inline double signed_volume(const Panel& q)
 /// depends on the labelling as the signed volume's does; congruence under a
 /// proper rigid motion keeps it, so quads twisted opposite ways in their
 /// S-quad's labelling become congruent only by flattening.
-inline double relative_twist(const Panel& q)
-{
-  if(q.is_triangle())
-    return 0;
-  const std::array<double, 4> e = edge_lengths(q);
-  const double mean = (e[0] + e[1] + e[2] + e[3]) / 4;
-  return mean > 0 ? 6 * signed_volume(q) / (mean * mean * mean) : 0.0;
-}
+CGAL_TILABLE_SURFACES_INLINE
+double relative_twist(const Panel& q);
 
 /// \ingroup PkgTilableSurfacesRef
 /// Distance of t3 to the plane through t0, t1, t2: 0 for a planar quad and
 /// for a triangle. When t0, t1, t2 are (nearly) collinear, the largest of the
 /// four corner triangles is taken as the base instead, so the value stays
 /// meaningful.
-inline double planarity_defect(const Panel& q)
-{
-  if(q.is_triangle())
-    return 0;
-  // 6|V| = (twice the base area) * height.
-  const double six_volume = 6.0 * std::abs(signed_volume(q));
-  const double base = (q[1] - q[0]).cross(q[2] - q[0]).norm();
-  double scale = 0;
-  for(int i = 0; i < 4; ++i)
-    scale = (std::max)(scale, (q[(i + 1) & 3] - q[i]).squaredNorm());
-  if(base > internal::tuning::collinear_base * scale)
-    return six_volume / base;
-  double largest_base = 0;
-  for(int i = 0; i < 4; ++i)
-    largest_base = (std::max)(largest_base,
-      (q[(i + 1) & 3] - q[i]).cross(q[(i + 2) & 3] - q[i]).norm());
-  return largest_base == 0 ? 0.0 : six_volume / largest_base;
-}
+CGAL_TILABLE_SURFACES_INLINE
+double planarity_defect(const Panel& q);
 
 /// \ingroup PkgTilableSurfacesRef
 /// Distance between the lines of the diagonals t0t2 and t1t3 of a quad: 0
 /// exactly when the quad is planar (or its diagonals are parallel); 0 for a
 /// triangle. The planarity measure of `planar_tiles`.
-inline double diagonal_distance(const Panel& q)
-{
-  if(q.is_triangle())
-    return 0;
-  const Eigen::Vector3d n = (q[2] - q[0]).cross(q[3] - q[1]);
-  const double length = n.norm();
-  return length > 0 ? std::abs((q[1] - q[0]).dot(n)) / length : 0.0;
-}
+CGAL_TILABLE_SURFACES_INLINE
+double diagonal_distance(const Panel& q);
 
 /// \ingroup PkgTilableSurfacesRef
 /// A rotation-invariant and relabelling-invariant shape descriptor, all in
@@ -332,16 +294,8 @@ typedef std::array<double, 7> Quad_descriptor;
 
 /// \ingroup PkgTilableSurfacesRef
 /// Computes the descriptor of `q`; see `Quad_descriptor`.
-inline Quad_descriptor shape_descriptor(const Panel& q)
-{
-  const std::array<double, 4> e = edge_lengths(q);
-  const std::array<double, 2> d = diagonal_lengths(q);
-  Quad_descriptor r{{e[0], e[1], e[2], e[3], d[0], d[1],
-                     std::cbrt(6.0 * std::abs(signed_volume(q)))}};
-  std::sort(r.begin(), r.begin() + 4);
-  std::sort(r.begin() + 4, r.begin() + 6);
-  return r;
-}
+CGAL_TILABLE_SURFACES_INLINE
+Quad_descriptor shape_descriptor(const Panel& q);
 
 /// \ingroup PkgTilableSurfacesRef
 /// A rigid motion `x -> rotation * x + translation`; `rotation` has
@@ -404,23 +358,14 @@ Rigid_fit best_rigid_fit(const Panel& source, const Panel& target, bool allow_mi
 /// (Umeyama's closed form, never a mirror). With `allow_mirror`, the better of
 /// that motion and the best improper one. `source` and `target` have the same
 /// number of corners.
-inline Rigid_fit best_rigid_fit(const Panel& source, const Panel& target, bool allow_mirror = false)
-{
-  return source.is_triangle() ? internal::best_rigid_fit<3>(source, target, allow_mirror)
-                              : internal::best_rigid_fit<4>(source, target, allow_mirror);
-}
+CGAL_TILABLE_SURFACES_INLINE
+Rigid_fit best_rigid_fit(const Panel& source, const Panel& target, bool allow_mirror = false);
 
 /// \ingroup PkgTilableSurfacesRef
 /// max_i |target[i] - T(source[i])| for the best rigid fit T of `source`
 /// onto `target` (labels already in correspondence).
-inline double rigid_fit_deviation(const Panel& source, const Panel& target, bool allow_mirror = false)
-{
-  const Rigid_fit fit = best_rigid_fit(source, target, allow_mirror);
-  double worst = 0;
-  for(int i = 0; i < source.size(); ++i)
-    worst = (std::max)(worst, (target[i] - fit(source[i])).norm());
-  return worst;
-}
+CGAL_TILABLE_SURFACES_INLINE
+double rigid_fit_deviation(const Panel& source, const Panel& target, bool allow_mirror = false);
 
 /// \ingroup PkgTilableSurfacesRef
 /// Whether correspondence `o` may match panels of `n` corners under `policy`:
@@ -450,32 +395,9 @@ struct Quad_match
 /// `p` onto `q` relabelled by `o`. Symmetric in value: `best_match(q, p)` has
 /// the same dissimilarity, with the inverse orientation. Ties are broken by
 /// the smallest orientation index, so the result is deterministic.
-inline Quad_match best_match(const Panel& p, const Panel& q,
-                             Orientation_policy policy = PROPER_RIGID_MOTIONS)
-{
-  const bool allow_mirror = (policy == ALLOW_MIRRORED_PANELS);
-  Quad_match best;
-  if(p.size() != q.size())
-    return best;
-  for(int o = 0; o < 8; ++o)
-  {
-    const Panel_orientation orientation(o);
-    if(!is_admissible(orientation, q.size(), policy))
-      continue;
-    const Panel target = reoriented(q, orientation);
-    const Rigid_fit fit = best_rigid_fit(p, target, allow_mirror);
-    double sum = 0;
-    for(int i = 0; i < q.size(); ++i)
-      sum += (target[i] - fit(p[i])).norm();
-    if(sum < best.dissimilarity)
-    {
-      best.dissimilarity = sum;
-      best.orientation = orientation;
-      best.fit = fit;
-    }
-  }
-  return best;
-}
+CGAL_TILABLE_SURFACES_INLINE
+Quad_match best_match(const Panel& p, const Panel& q,
+                      Orientation_policy policy = PROPER_RIGID_MOTIONS);
 
 /// \ingroup PkgTilableSurfacesRef
 /// The dissimilarity s(p, q) of the paper (§3); see `best_match()`.
@@ -605,5 +527,9 @@ using Quad_orientation CGAL_DEPRECATED_MSG("use Panel_orientation") = Panel_orie
 
 } // namespace Tilable_surfaces
 } // namespace CGAL
+
+#ifndef CGAL_TILABLE_SURFACES_COMPILED_LIBRARY
+#include <CGAL/Tilable_surfaces/quad_shape_impl.h>
+#endif
 
 #endif // CGAL_TILABLE_SURFACES_QUAD_SHAPE_H

@@ -7,6 +7,7 @@
 /// \file validation.h
 /// Input checks shared by every entry point of the package.
 
+#include <CGAL/Tilable_surfaces/internal/config.h>
 #include <CGAL/Tilable_surfaces/exceptions.h>
 #include <CGAL/Tilable_surfaces/named_parameters.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
@@ -190,23 +191,9 @@ int face_corner_count(typename boost::graph_traits<PolygonMesh>::face_descriptor
 // Checks the cluster `c` and orientation `o` of face `fi`, of `corners`
 // corners, against K clusters (K unknown: the largest size_t) and the
 // orientations of its kind.
-inline void check_face_label(std::size_t fi, long long c, long long o, std::size_t number_of_clusters,
-                             int corners)
-{
-  if(c < 0 || std::size_t(c) >= number_of_clusters)
-    throw Invalid_input("face " + std::to_string(fi) + " has cluster " + std::to_string(c) +
-                        (number_of_clusters == (std::numeric_limits<std::size_t>::max)()
-                           ? std::string(", a cluster id must be >= 0")
-                           : ", not in 0.." + std::to_string(number_of_clusters - 1)),
-                        Invalid_input::FACE, fi);
-  if(o < 0 || o > 7)
-    throw Invalid_input("face " + std::to_string(fi) + " has orientation " + std::to_string(o) +
-                        ", not in 0..7", Invalid_input::FACE, fi);
-  if(!Panel_orientation(int(o)).is_valid_for(corners))
-    throw Invalid_input("face " + std::to_string(fi) + " is a triangle and has orientation " +
-                        std::to_string(o) + ", not one of a triangle's (0, 1, 2, 4, 5, 6)",
-                        Invalid_input::FACE, fi);
-}
+CGAL_TILABLE_SURFACES_INLINE
+void check_face_label(std::size_t fi, long long c, long long o, std::size_t number_of_clusters,
+                      int corners);
 
 // The same for every face, the clusters and orientations read from maps.
 template <typename PolygonMesh, typename FaceIndexMap, typename ClusterMap, typename OrientationMap>
@@ -393,5 +380,9 @@ void validate_quad_mesh(const PolygonMesh& pm, const CGAL_NP_CLASS& np = paramet
 
 } // namespace Tilable_surfaces
 } // namespace CGAL
+
+#ifndef CGAL_TILABLE_SURFACES_COMPILED_LIBRARY
+#include <CGAL/Tilable_surfaces/validation_impl.h>
+#endif
 
 #endif // CGAL_TILABLE_SURFACES_VALIDATION_H

@@ -10,6 +10,7 @@
 /// count and the worst deviation of an instance, all in the mesh's units.
 /// CSV, or JSON (with nlohmann::json, Debian's `nlohmann-json3-dev`).
 
+#include <CGAL/Tilable_surfaces/internal/config.h>
 #include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/exceptions.h>
 #include <CGAL/Tilable_surfaces/measure.h>
@@ -47,14 +48,8 @@ struct Tile_row
 // toward each other flattens the S-quad with no corner moving more than d / 2,
 // so an instance within `worst_deviation` of the S-quad is within
 // `worst_deviation` + d / 2 of that flat mold.
-inline bool has_flat_mold(const Tile& t, const std::array<double, 4>& edges)
-{
-  const double d = diagonal_distance(t.corners);
-  if(t.panel_tolerance > 0)
-    return t.worst_deviation + d / 2 <= t.panel_tolerance;
-  const double mean_edge = (edges[0] + edges[1] + edges[2] + edges[3]) / double(t.corners.size());
-  return d <= defaults::congruence_tolerance * mean_edge;
-}
+CGAL_TILABLE_SURFACES_INLINE
+bool has_flat_mold(const Tile& t, const std::array<double, 4>& edges);
 
 inline Tile_row tile_row(const Tile& t)
 {
@@ -64,17 +59,8 @@ inline Tile_row tile_row(const Tile& t)
 }
 
 // Refuses a catalog with a non-finite number, before anything is written.
-inline void check_tiles(const std::vector<Tile>& tiles)
-{
-  for(std::size_t i = 0; i < tiles.size(); ++i)
-  {
-    bool finite = std::isfinite(tiles[i].worst_deviation);
-    for(const Eigen::Vector3d& p : tiles[i].corners) finite = finite && p.allFinite();
-    if(!finite)
-      throw Invalid_input("tile " + std::to_string(i) + " (id " + std::to_string(tiles[i].id) +
-                          ") has a non-finite corner or deviation", Invalid_input::PARAMETER, i);
-  }
-}
+CGAL_TILABLE_SURFACES_INLINE
+void check_tiles(const std::vector<Tile>& tiles);
 
 } // namespace internal
 
@@ -94,35 +80,8 @@ inline void check_tiles(const std::vector<Tile>& tiles)
 /// is the edge t2t0. Full double precision.
 /// \throws Invalid_input if a tile has a non-finite number; nothing is
 /// written then.
-inline bool write_tile_catalog_CSV(std::ostream& os, const std::vector<Tile>& tiles)
-{
-  internal::check_tiles(tiles);
-  os << "id,instances,mirrored,t0x,t0y,t0z,t1x,t1y,t1z,t2x,t2y,t2z,t3x,t3y,t3z,"
-        "e01,e12,e23,e30,d02,d13,signed_volume,planarity,planar,worst_deviation,kind,mold\n";
-  os << std::setprecision(std::numeric_limits<double>::max_digits10);
-  for(const Tile& t : tiles)
-  {
-    const internal::Tile_row r = internal::tile_row(t);
-    os << t.id << ',' << t.instance_count << ',' << t.mirrored_count;
-    const bool triangle = t.corners.is_triangle();
-    for(const Eigen::Vector3d& p : t.corners)
-      os << ',' << p.x() << ',' << p.y() << ',' << p.z();
-    if(triangle) os << ",,,";
-    for(int k = 0; k < 4; ++k)
-    {
-      os << ',';
-      if(k < t.corners.size()) os << r.edges[std::size_t(k)];
-    }
-    for(double d : r.diagonals)
-    {
-      os << ',';
-      if(!triangle) os << d;
-    }
-    os << ',' << r.signed_volume << ',' << r.planarity << ',' << (r.is_planar ? 1 : 0) << ','
-       << t.worst_deviation << ',' << (triangle ? "triangle" : "quad") << ',' << t.mold << '\n';
-  }
-  return bool(os);
-}
+CGAL_TILABLE_SURFACES_INLINE
+bool write_tile_catalog_CSV(std::ostream& os, const std::vector<Tile>& tiles);
 
 /// \ingroup PkgTilableSurfacesRef
 /// The catalog as a JSON array, one object per tile with the fields of
@@ -130,46 +89,20 @@ inline bool write_tile_catalog_CSV(std::ostream& os, const std::vector<Tile>& ti
 /// S-triangle, `edges` and `diagonals` as arrays, an S-triangle's 3 edges and
 /// no diagonal).
 /// \throws Invalid_input if a tile has a non-finite number.
-inline nlohmann::json tile_catalog_json(const std::vector<Tile>& tiles)
-{
-  internal::check_tiles(tiles);
-  nlohmann::json catalog = nlohmann::json::array();
-  for(const Tile& t : tiles)
-  {
-    const internal::Tile_row r = internal::tile_row(t);
-    nlohmann::json corners = nlohmann::json::array();
-    for(const Eigen::Vector3d& p : t.corners)
-      corners.push_back({p.x(), p.y(), p.z()});
-    catalog.push_back({{"id", t.id},
-                       {"instances", t.instance_count},
-                       {"mirrored", t.mirrored_count},
-                       {"mold", t.mold},
-                       {"kind", t.corners.is_triangle() ? "triangle" : "quad"},
-                       {"corners", corners},
-                       {"edges", std::vector<double>(r.edges.begin(), r.edges.begin() + t.corners.size())},
-                       {"diagonals", t.corners.is_triangle() ? std::vector<double>()
-                                                             : std::vector<double>(r.diagonals.begin(), r.diagonals.end())},
-                       {"signed_volume", r.signed_volume},
-                       {"planarity", r.planarity},
-                       {"planar", r.is_planar},
-                       {"worst_deviation", t.worst_deviation},
-                       {"panel_tolerance", t.panel_tolerance},
-                       {"instance_faces", t.instance_faces},
-                       {"instance_deviations", t.instance_deviations}});
-  }
-  return catalog;
-}
+CGAL_TILABLE_SURFACES_INLINE
+nlohmann::json tile_catalog_json(const std::vector<Tile>& tiles);
 
 /// \ingroup PkgTilableSurfacesRef
 /// Writes `tile_catalog_json(tiles)` to `os`, indented.
-inline bool write_tile_catalog_JSON(std::ostream& os, const std::vector<Tile>& tiles)
-{
-  os << std::setw(2) << tile_catalog_json(tiles) << '\n';
-  return bool(os);
-}
+CGAL_TILABLE_SURFACES_INLINE
+bool write_tile_catalog_JSON(std::ostream& os, const std::vector<Tile>& tiles);
 
 } // namespace IO
 } // namespace Tilable_surfaces
 } // namespace CGAL
+
+#ifndef CGAL_TILABLE_SURFACES_COMPILED_LIBRARY
+#include <CGAL/Tilable_surfaces/IO/tile_catalog_impl.h>
+#endif
 
 #endif // CGAL_TILABLE_SURFACES_IO_TILE_CATALOG_H

@@ -8,6 +8,7 @@
 // orientation of every face, by face index, and K. The maps a user passes are
 // read into it, and checked, in one place: read_face_clustering().
 
+#include <CGAL/Tilable_surfaces/internal/config.h>
 #include <CGAL/Tilable_surfaces/exceptions.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 #include <CGAL/Tilable_surfaces/validation.h>
@@ -26,14 +27,9 @@ namespace Tilable_surfaces {
 namespace internal {
 
 // Per cluster, its faces (increasing indices).
-inline std::vector<std::vector<std::size_t> >
-cluster_members(const std::vector<std::size_t>& label, std::size_t k)
-{
-  std::vector<std::vector<std::size_t> > members(k);
-  for(std::size_t f = 0; f < label.size(); ++f)
-    members[label[f]].push_back(f);
-  return members;
-}
+CGAL_TILABLE_SURFACES_INLINE
+std::vector<std::vector<std::size_t> >
+cluster_members(const std::vector<std::size_t>& label, std::size_t k);
 
 struct Face_clustering
 {
@@ -166,5 +162,9 @@ void write_face_clustering(const PolygonMesh& pm, FaceIndexMap fim, const Face_c
 } // namespace internal
 } // namespace Tilable_surfaces
 } // namespace CGAL
+
+#ifndef CGAL_TILABLE_SURFACES_COMPILED_LIBRARY
+#include <CGAL/Tilable_surfaces/internal/Face_clustering_impl.h>
+#endif
 
 #endif // CGAL_TILABLE_SURFACES_INTERNAL_FACE_CLUSTERING_H

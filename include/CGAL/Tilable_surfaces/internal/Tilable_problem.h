@@ -7,6 +7,7 @@
 // The mesh and its clustering turned into plain arrays indexed by vertex
 // index: the solvers and the measurements work on these, never on the mesh.
 
+#include <CGAL/Tilable_surfaces/internal/config.h>
 #include <CGAL/Tilable_surfaces/Edge_sharing_graph.h>
 #include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/exceptions.h>
@@ -94,14 +95,8 @@ inline int corner_count(const Tilable_problem& problem, std::size_t face)
 }
 
 // Corner i of face `face` is t_i of its S-quad (or S-triangle).
-inline Panel instance(const Tilable_problem& problem, const Point_matrix& points, std::size_t face)
-{
-  const auto& c = problem.face_corners[face];
-  auto corner = [&](int i) -> Eigen::Vector3d { return points.row(c[std::size_t(i)]).transpose(); };
-  if(corner_count(problem, face) == 3)
-    return Panel(corner(0), corner(1), corner(2));
-  return Panel{{corner(0), corner(1), corner(2), corner(3)}};
-}
+CGAL_TILABLE_SURFACES_INLINE
+Panel instance(const Tilable_problem& problem, const Point_matrix& points, std::size_t face);
 
 // Fills the corners and clusters of the faces, the edges and the edge groups
 // (one per edge-sharing component). The faces in index order, the edges in the
@@ -151,36 +146,8 @@ void add_faces_and_edge_groups(const PolygonMesh& pm, const VertexIndexMap& vim,
 
 // Fills the diagonal and volume groups: per quad cluster, its instances'
 // diagonals t0t2, then t1t3, and their corners.
-inline void add_cluster_groups(Tilable_problem& problem)
-{
-  std::vector<std::vector<std::size_t>> by_cluster(problem.number_of_clusters);
-  for(std::size_t i = 0; i < problem.face_cluster.size(); ++i)
-    by_cluster[problem.face_cluster[i]].push_back(i);
-  for(const auto& members : by_cluster)
-  {
-    // The kinds are never mixed in a cluster (read_face_clustering() checks).
-    if(!members.empty() && corner_count(problem, members.front()) == 3)
-      continue;
-    for(int d = 0; d < 2; ++d)
-    {
-      for(std::size_t i : members)
-      {
-        const auto& c = problem.face_corners[i];
-        problem.diagonal_groups.items.push_back({{c[d], c[d + 2], -1, -1}});
-      }
-      problem.diagonal_groups.close_group();
-    }
-    for(std::size_t i : members)
-    {
-      const auto& c = problem.face_corners[i];
-      if(problem.allow_mirror && signed_volume(instance(problem, problem.points, i)) < 0)
-        problem.volume_groups.items.push_back({{c[0], c[3], c[2], c[1]}});
-      else
-        problem.volume_groups.items.push_back(c);
-    }
-    problem.volume_groups.close_group();
-  }
-}
+CGAL_TILABLE_SURFACES_INLINE
+void add_cluster_groups(Tilable_problem& problem);
 
 // The clustering of `pm` read from the named parameters `face_cluster_map`
 // and `face_orientation_map` (both required), with K = 1 + the largest id.
@@ -213,16 +180,15 @@ Tilable_problem make_tilable_problem(const PolygonMesh& pm, const NamedParameter
 }
 
 // Mean edge length of the mesh with vertex positions `points`.
-inline double mean_edge_length(const Tilable_problem& problem, const Point_matrix& points)
-{
-  double sum = 0;
-  for(const auto& e : problem.edges)
-    sum += (points.row(e[0]) - points.row(e[1])).norm();
-  return problem.edges.empty() ? 0.0 : sum / double(problem.edges.size());
-}
+CGAL_TILABLE_SURFACES_INLINE
+double mean_edge_length(const Tilable_problem& problem, const Point_matrix& points);
 
 } // namespace internal
 } // namespace Tilable_surfaces
 } // namespace CGAL
+
+#ifndef CGAL_TILABLE_SURFACES_COMPILED_LIBRARY
+#include <CGAL/Tilable_surfaces/internal/Tilable_problem_impl.h>
+#endif
 
 #endif // CGAL_TILABLE_SURFACES_INTERNAL_TILABLE_PROBLEM_H

@@ -14,6 +14,7 @@
 // in the box of half-width tau around p's lengths. The volume component is not
 // Lipschitz in the corners and is left out.
 
+#include <CGAL/Tilable_surfaces/internal/config.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 
 #include <CGAL/Fuzzy_iso_box.h>
@@ -74,36 +75,11 @@ class Descriptor_index
   typedef CGAL::Fuzzy_iso_box<Traits> Box;
 
 public:
-  explicit Descriptor_index(const std::vector<Quad_descriptor>& descriptors)
-  {
-    std::vector<Length_point> points(descriptors.size());
-    for(std::size_t i = 0; i < descriptors.size(); ++i)
-    {
-      std::copy(descriptors[i].begin(), descriptors[i].begin() + 6, points[i].c.begin());
-      points[i].index = i;
-    }
-    m_tree.insert(points.begin(), points.end());
-    m_tree.build();
-  }
+  explicit Descriptor_index(const std::vector<Quad_descriptor>& descriptors);
 
   // Indices, increasing, of the descriptors within max-norm distance
   // `half_width` of `d` on the 6 length components.
-  std::vector<std::size_t> in_box(const Quad_descriptor& d, double half_width) const
-  {
-    Length_point lo, hi;
-    for(int k = 0; k < 6; ++k)
-    {
-      lo.c[k] = d[k] - half_width;
-      hi.c[k] = d[k] + half_width;
-    }
-    std::vector<Length_point> found;
-    m_tree.search(std::back_inserter(found), Box(lo, hi));
-    std::vector<std::size_t> r;
-    r.reserve(found.size());
-    for(const Length_point& p : found) r.push_back(p.index);
-    std::sort(r.begin(), r.end());
-    return r;
-  }
+  std::vector<std::size_t> in_box(const Quad_descriptor& d, double half_width) const;
 
 private:
   Tree m_tree;
@@ -112,5 +88,9 @@ private:
 } // namespace internal
 } // namespace Tilable_surfaces
 } // namespace CGAL
+
+#ifndef CGAL_TILABLE_SURFACES_COMPILED_LIBRARY
+#include <CGAL/Tilable_surfaces/internal/Clustering/descriptor_index_impl.h>
+#endif
 
 #endif // CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_DESCRIPTOR_INDEX_H

@@ -17,6 +17,7 @@
 //     S(C) = n SSE,  S(A u B) - S(A) - S(B) = nA SSE_B + nB SSE_A + nA nB |muA - muB|^2.
 //   O(1) per merge, linear memory: the scalable path.
 
+#include <CGAL/Tilable_surfaces/internal/config.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 
 #include <cstddef>
@@ -34,24 +35,7 @@ public:
   // `affinity` is the n x n dissimilarity matrix (row major), `cluster` the
   // initial cluster of every face, in 0..N-1.
   Exact_merge_costs(const std::vector<double>& affinity, const std::vector<std::size_t>& cluster,
-                    std::size_t number_of_clusters)
-    : m_n(number_of_clusters), m_cross(m_n * m_n, 0.0), m_initial(m_n)
-  {
-    const std::size_t faces = cluster.size();
-    for(std::size_t p = 0; p < faces; ++p)
-      for(std::size_t q = p + 1; q < faces; ++q)
-      {
-        const double a = affinity[p * faces + q];
-        const std::size_t cp = cluster[p], cq = cluster[q];
-        if(cp == cq)
-          m_initial[cp].weight += a;
-        else
-        {
-          m_cross[cp * m_n + cq] += a;
-          m_cross[cq * m_n + cp] += a;
-        }
-      }
-  }
+                    std::size_t number_of_clusters);
 
   Group initial_group(std::size_t c) const { return m_initial[c]; }
 
@@ -88,26 +72,7 @@ public:
   };
 
   Descriptor_merge_costs(const std::vector<Quad_descriptor>& descriptors,
-                         const std::vector<std::size_t>& cluster, std::size_t number_of_clusters)
-    : m_initial(number_of_clusters)
-  {
-    for(std::size_t f = 0; f < cluster.size(); ++f)
-    {
-      Group& g = m_initial[cluster[f]];
-      g.n += 1;
-      for(std::size_t k = 0; k < g.mean.size(); ++k) g.mean[k] += descriptors[f][k];
-    }
-    for(Group& g : m_initial)
-      for(double& x : g.mean) x /= g.n;
-    for(std::size_t f = 0; f < cluster.size(); ++f)
-    {
-      Group& g = m_initial[cluster[f]];
-      for(std::size_t k = 0; k < g.mean.size(); ++k)
-        g.scatter += (descriptors[f][k] - g.mean[k]) * (descriptors[f][k] - g.mean[k]);
-    }
-    for(Group& g : m_initial)
-      g.weight = g.n * g.scatter;
-  }
+                         const std::vector<std::size_t>& cluster, std::size_t number_of_clusters);
 
   Group initial_group(std::size_t c) const { return m_initial[c]; }
 
@@ -143,5 +108,9 @@ private:
 } // namespace internal
 } // namespace Tilable_surfaces
 } // namespace CGAL
+
+#ifndef CGAL_TILABLE_SURFACES_COMPILED_LIBRARY
+#include <CGAL/Tilable_surfaces/internal/Clustering/merge_costs_impl.h>
+#endif
 
 #endif // CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_MERGE_COSTS_H

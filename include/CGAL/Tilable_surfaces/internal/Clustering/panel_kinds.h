@@ -8,6 +8,7 @@
 // candidate generators that do not see kinds (k-means on descriptors, quad
 // strips) have their clusters split by kind here before anything is matched.
 
+#include <CGAL/Tilable_surfaces/internal/config.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 
 #include <cstddef>
@@ -29,26 +30,20 @@ inline bool has_triangles(const std::vector<Panel>& panels)
 
 // The number of kinds among `panels`: 1, or 2 with quads and triangles (the
 // smallest possible K).
-inline std::size_t number_of_panel_kinds(const std::vector<Panel>& panels)
-{
-  bool quads = false, triangles = false;
-  for(const Panel& p : panels)
-    (p.is_triangle() ? triangles : quads) = true;
-  return std::size_t(quads) + std::size_t(triangles);
-}
+CGAL_TILABLE_SURFACES_INLINE
+std::size_t number_of_panel_kinds(const std::vector<Panel>& panels);
 
 // Each cluster of `label` that holds both kinds split in two; the clusters
 // numbered by first face. Returns their number.
-inline std::size_t separate_kinds(const std::vector<Panel>& panels, std::vector<std::size_t>& label)
-{
-  std::map<std::pair<std::size_t, int>, std::size_t> id;
-  for(std::size_t f = 0; f < label.size(); ++f)
-    label[f] = id.emplace(std::make_pair(label[f], panels[f].size()), id.size()).first->second;
-  return id.size();
-}
+CGAL_TILABLE_SURFACES_INLINE
+std::size_t separate_kinds(const std::vector<Panel>& panels, std::vector<std::size_t>& label);
 
 } // namespace internal
 } // namespace Tilable_surfaces
 } // namespace CGAL
+
+#ifndef CGAL_TILABLE_SURFACES_COMPILED_LIBRARY
+#include <CGAL/Tilable_surfaces/internal/Clustering/panel_kinds_impl.h>
+#endif
 
 #endif // CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_PANEL_KINDS_H

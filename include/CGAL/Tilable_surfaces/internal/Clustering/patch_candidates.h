@@ -25,6 +25,7 @@
 // one mold per patch): more molds per patch keep more of each patch's
 // structure and share more across patches.
 
+#include <CGAL/Tilable_surfaces/internal/config.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/segment_candidates.h>
 #include <CGAL/Tilable_surfaces/internal/Shape_analysis/quad_layout.h>
 #include <CGAL/Tilable_surfaces/internal/Shape_analysis/twist_sign.h>
@@ -57,14 +58,7 @@ struct Mold_sum
   Eigen::Matrix<double, 6, 1> distances = Eigen::Matrix<double, 6, 1>::Zero();
   double positive_twist = 0, negative_twist = 0;  // largest 6 x signed volume of each sign, as magnitudes
 
-  void add(const Panel& q)
-  {
-    ++count;
-    distances += corner_distances(q);
-    const double twist = 6 * signed_volume(q);
-    double& largest = twist > 0 ? positive_twist : negative_twist;
-    largest = (std::max)(largest, std::abs(twist));
-  }
+  void add(const Panel& q);
   // The twist of a quad of the mean edge planar as far as its mold is concerned.
   double planar_twist() const
   {
@@ -79,23 +73,9 @@ struct Mold_sum
   // makes congruent.
   bool mixes_twists() const { return twists_oppose(positive_twist, -negative_twist, planar_twist()); }
   // With `other` in this labelling, `other` matched with orientation o.
-  Mold_sum merged(const Mold_sum& other, Panel_orientation o) const
-  {
-    Mold_sum m = *this;
-    m.count += other.count;
-    m.distances += reoriented(other.distances, o);
-    const bool same = orientation_sign(o) > 0;
-    m.positive_twist = (std::max)(positive_twist, same ? other.positive_twist : other.negative_twist);
-    m.negative_twist = (std::max)(negative_twist, same ? other.negative_twist : other.positive_twist);
-    return m;
-  }
+  Mold_sum merged(const Mold_sum& other, Panel_orientation o) const;
   // Ward's increase of the spread when merged with `other` matched by o.
-  double merge_cost(const Mold_sum& other, Panel_orientation o) const
-  {
-    const Eigen::Matrix<double, 6, 1> d =
-      distances / double(count) - reoriented(other.distances, o) / double(other.count);
-    return d.squaredNorm() * double(count * other.count) / double(count + other.count);
-  }
+  double merge_cost(const Mold_sum& other, Panel_orientation o) const;
 };
 
 // The runs of rows of one grid patch, in both directions of its grid and
@@ -105,19 +85,7 @@ struct Patch_runs
   std::vector<std::unique_ptr<Segment_options> > grids;
   std::vector<std::unique_ptr<Run_partitions> > partitions;
 
-  Patch_runs(const std::array<const Quad_grid*, 2>& grid, std::size_t max_molds, Orientation_policy policy)
-  {
-    for(const Quad_grid* g : grid)
-    {
-      if(g->rows == 0 || double(g->rows) * double(g->rows) * double(max_molds) > tuning::segment_runs_work)
-        continue;
-      grids.emplace_back(new Segment_options);
-      grids.back()->grid = *g;
-      add_run_options(*grids.back(), max_molds, policy);
-      for(const std::vector<const Run_option*>& set : grids.back()->sets)
-        partitions.emplace_back(new Run_partitions(grids.back()->grid, set, max_molds));
-    }
-  }
+  Patch_runs(const std::array<const Quad_grid*, 2>& grid, std::size_t max_molds, Orientation_policy policy);
 
   // The partition of least cost with exactly m molds, or none.
   const Run_partitions* best(std::size_t m) const
@@ -425,5 +393,9 @@ struct Patch_segment_generator
 } // namespace internal
 } // namespace Tilable_surfaces
 } // namespace CGAL
+
+#ifndef CGAL_TILABLE_SURFACES_COMPILED_LIBRARY
+#include <CGAL/Tilable_surfaces/internal/Clustering/patch_candidates_impl.h>
+#endif
 
 #endif // CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_PATCH_CANDIDATES_H

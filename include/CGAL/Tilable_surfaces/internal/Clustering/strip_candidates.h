@@ -24,6 +24,7 @@
 // lengths they tie together) down to K, or, if there are fewer than K, the
 // largest clusters are split by shape until K.
 
+#include <CGAL/Tilable_surfaces/internal/config.h>
 #include <CGAL/Tilable_surfaces/internal/tuning.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/cluster_analysis.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/initial_clustering.h>
@@ -45,32 +46,10 @@ namespace Tilable_surfaces {
 namespace internal {
 
 // Splits the largest initial clusters until there are k of them.
-inline void split_to(std::size_t k, const std::vector<Panel>& quads,
-                     const std::vector<Quad_descriptor>& descriptors, Orientation_policy policy,
-                     CGAL::Random& random, Initial_clustering& init)
-{
-  while(init.leaders.size() < k)
-  {
-    std::vector<std::vector<std::size_t> > members =
-      cluster_members(init.cluster, init.leaders.size());
-    std::size_t largest = 0;
-    for(std::size_t c = 1; c < members.size(); ++c)
-      if(members[c].size() > members[largest].size()) largest = c;
-    const std::vector<bool> second =
-      split_in_two(quads, descriptors, members[largest], policy, random);
-    const std::size_t c = init.leaders.size();
-    std::size_t leader = no_index();
-    for(std::size_t i = 0; i < second.size(); ++i)
-    {
-      if(!second[i]) continue;
-      const std::size_t f = members[largest][i];
-      if(leader == no_index()) leader = f;
-      init.cluster[f] = c;
-      init.orientation[f] = fast_best_match(quads[leader], quads[f], policy).orientation;
-    }
-    init.leaders.push_back(leader);
-  }
-}
+CGAL_TILABLE_SURFACES_INLINE
+void split_to(std::size_t k, const std::vector<Panel>& quads,
+              const std::vector<Quad_descriptor>& descriptors, Orientation_policy policy,
+              CGAL::Random& random, Initial_clustering& init);
 
 // Greedy merges of the clusters of `label` (S of them) down to each count
 // of `targets`: each time the pair whose merge spreads the input's edge
@@ -230,5 +209,9 @@ strip_clusterings(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm, c
 } // namespace internal
 } // namespace Tilable_surfaces
 } // namespace CGAL
+
+#ifndef CGAL_TILABLE_SURFACES_COMPILED_LIBRARY
+#include <CGAL/Tilable_surfaces/internal/Clustering/strip_candidates_impl.h>
+#endif
 
 #endif // CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_STRIP_CANDIDATES_H

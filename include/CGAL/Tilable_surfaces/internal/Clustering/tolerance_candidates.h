@@ -15,6 +15,7 @@
 // groups there is no candidate; with fewer, the largest groups are halved
 // until there are K: a part of a group fits its mold as well.
 
+#include <CGAL/Tilable_surfaces/internal/config.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/descriptor_index.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/initial_clustering.h>
 
@@ -28,30 +29,10 @@ namespace internal {
 
 // The groups of `panels` within `tolerance` (absolute) of one mold, at most
 // `k` of them, halved up to `k`; empty when more than `k` are needed.
-inline std::vector<std::size_t> tolerance_groups(const std::vector<Panel>& panels,
-                                                 const std::vector<Quad_descriptor>& descriptors,
-                                                 double tolerance, Orientation_policy policy, std::size_t k)
-{
-  Initial_clustering groups;
-  if(!leader_clustering(panels, descriptors, Descriptor_index(descriptors), 0.5 * tolerance, policy, k, groups))
-    return {};
-  std::vector<std::vector<std::size_t>> members(groups.leaders.size());
-  for(std::size_t f = 0; f < panels.size(); ++f) members[groups.cluster[f]].push_back(f);
-  while(members.size() < k)
-  {
-    // The largest group (the first of equal size), halved in face order.
-    auto largest = std::max_element(members.begin(), members.end(),
-                                    [](const auto& a, const auto& b) { return a.size() < b.size(); });
-    const std::size_t half = largest->size() / 2;
-    std::vector<std::size_t> second(largest->begin() + std::ptrdiff_t(half), largest->end());
-    largest->resize(half);
-    members.push_back(std::move(second));
-  }
-  std::vector<std::size_t> label(panels.size());
-  for(std::size_t c = 0; c < members.size(); ++c)
-    for(std::size_t f : members[c]) label[f] = c;
-  return label;
-}
+CGAL_TILABLE_SURFACES_INLINE
+std::vector<std::size_t> tolerance_groups(const std::vector<Panel>& panels,
+                                          const std::vector<Quad_descriptor>& descriptors,
+                                          double tolerance, Orientation_policy policy, std::size_t k);
 
 // With `panel_tolerance` > 0: the tolerance groups, if at most K, each face
 // oriented by its best match on its cluster's S-quad.
@@ -76,5 +57,9 @@ struct Tolerance_group_generator
 } // namespace internal
 } // namespace Tilable_surfaces
 } // namespace CGAL
+
+#ifndef CGAL_TILABLE_SURFACES_COMPILED_LIBRARY
+#include <CGAL/Tilable_surfaces/internal/Clustering/tolerance_candidates_impl.h>
+#endif
 
 #endif // CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_TOLERANCE_CANDIDATES_H

@@ -15,6 +15,7 @@
 // the sweeps (sweep_candidates.h) see rings of rows + 1 lattice points, some
 // missing.
 
+#include <CGAL/Tilable_surfaces/internal/config.h>
 #include <CGAL/Tilable_surfaces/internal/Clustering/segment_candidates.h>
 #include <CGAL/Tilable_surfaces/internal/tuning.h>
 
@@ -94,17 +95,8 @@ bool lattice_cells(const PolygonMesh& pm, FaceIndexMap fim,
 }
 
 // The bounding box of the cells: `low` and `high` corners per lattice axis.
-inline void lattice_bounds(const std::vector<std::array<long, 2> >& cell, long low[2], long high[2])
-{
-  low[0] = high[0] = cell[0][0];
-  low[1] = high[1] = cell[0][1];
-  for(const std::array<long, 2>& c : cell)
-    for(int d = 0; d < 2; ++d)
-    {
-      low[d] = (std::min)(low[d], c[std::size_t(d)]);
-      high[d] = (std::max)(high[d], c[std::size_t(d)]);
-    }
-}
+CGAL_TILABLE_SURFACES_INLINE
+void lattice_bounds(const std::vector<std::array<long, 2> >& cell, long low[2], long high[2]);
 
 // Fills `trimmed` (its rows and columns already set, its rows left at 0
 // by the caller until every check has passed) and `lattice` from the cells:
@@ -226,5 +218,9 @@ Quad_grid trimmed_quad_grid(const PolygonMesh& pm, FaceIndexMap fim, VertexPoint
 } // namespace internal
 } // namespace Tilable_surfaces
 } // namespace CGAL
+
+#ifndef CGAL_TILABLE_SURFACES_COMPILED_LIBRARY
+#include <CGAL/Tilable_surfaces/internal/Clustering/trimmed_grid_impl.h>
+#endif
 
 #endif // CGAL_TILABLE_SURFACES_INTERNAL_CLUSTERING_TRIMMED_GRID_H

@@ -7,6 +7,7 @@
 // What both solvers receive and return. They work on positions normalized to
 // a unit bounding-box diagonal, so every tolerance below is relative.
 
+#include <CGAL/Tilable_surfaces/internal/config.h>
 #include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/internal/Tilable_problem.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/congruence_quantities.h>
@@ -57,21 +58,15 @@ struct Solver_report
 
 // Free unknowns: variable[v] is 3 * (rank of v among the free vertices), or
 // -1 for a fixed vertex; returns the number of unknowns.
-inline int number_free_unknowns(const std::vector<bool>& fixed, std::vector<int>& variable)
-{
-  variable.assign(fixed.size(), -1);
-  int n = 0;
-  for(std::size_t v = 0; v < fixed.size(); ++v)
-    if(!fixed[v])
-    {
-      variable[v] = n;
-      n += 3;
-    }
-  return n;
-}
+CGAL_TILABLE_SURFACES_INLINE
+int number_free_unknowns(const std::vector<bool>& fixed, std::vector<int>& variable);
 
 } // namespace internal
 } // namespace Tilable_surfaces
 } // namespace CGAL
+
+#ifndef CGAL_TILABLE_SURFACES_COMPILED_LIBRARY
+#include <CGAL/Tilable_surfaces/internal/Optimization/Solver_settings_impl.h>
+#endif
 
 #endif // CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_SOLVER_SETTINGS_H

@@ -52,6 +52,7 @@
 // tolerance, and every few iterations for the visitor; in between the
 // visitor sees that residual as an estimate.
 
+#include <CGAL/Tilable_surfaces/internal/config.h>
 #include <CGAL/Tilable_surfaces/internal/Measure/congruence.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/Solver_settings.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/closeness_objective.h>
@@ -74,22 +75,11 @@ namespace internal {
 // back-substitution. `multipliers` is the starting guess and receives the new
 // multipliers. Passes stop once the linearized residual is below
 // `eta` |target|.
-inline Eigen::VectorXd multiplier_step(const SPD_solver& solver, const Eigen::SparseMatrix<double>& J,
-                                       double b, const Eigen::VectorXd& gradient,
-                                       const Eigen::VectorXd& target, Eigen::VectorXd& multipliers,
-                                       double eta)
-{
-  Eigen::VectorXd step;
-  for(int pass = 0; pass < tuning::multiplier_passes; ++pass)
-  {
-    step = solver.solve(-(gradient + J.transpose() * (multipliers + b * target)));
-    const Eigen::VectorXd linear_residual = target + J * step;
-    multipliers += b * linear_residual;
-    if(linear_residual.norm() <= eta * target.norm())
-      break;
-  }
-  return step;
-}
+CGAL_TILABLE_SURFACES_INLINE
+Eigen::VectorXd multiplier_step(const SPD_solver& solver, const Eigen::SparseMatrix<double>& J,
+                                double b, const Eigen::VectorXd& gradient,
+                                const Eigen::VectorXd& target, Eigen::VectorXd& multipliers,
+                                double eta);
 
 // The phase-1 variants, in the order they are tried. The cautious one halves
 // the trust region whenever the line search shortens a step; the other keeps
@@ -414,27 +404,9 @@ private:
 // as they are within the tolerance ends farther instead: the SQP steps first
 // reach the constraints, then slide along them toward the input (cmc1.obj,
 // K = 9: 1.31% of the diagonal exact, 1.94% stopped within 1e-3 of an edge).
-inline void pull_back_toward_input(const Solver_input& in, const Solver_settings& settings, Point_matrix& X,
-                                   Solver_report& report)
-{
-  double inside = 1, outside = 0; // fractions of the move kept: within, and not known to be
-  Point_matrix best = X;
-  for(int i = 0; i < tuning::pull_back_bisections; ++i)
-  {
-    const double kept = 0.5 * (inside + outside);
-    const Point_matrix Y = in.X0 + kept * (X - in.X0);
-    const double error = congruence_error(in.problem, Y);
-    if(error <= settings.congruence_tolerance)
-    {
-      inside = kept;
-      best = Y;
-      report.congruence_error = error;
-    }
-    else
-      outside = kept;
-  }
-  X = best;
-}
+CGAL_TILABLE_SURFACES_INLINE
+void pull_back_toward_input(const Solver_input& in, const Solver_settings& settings, Point_matrix& X,
+                            Solver_report& report);
 
 // Each variant in turn from the input while the previous ones end short of
 // the tolerance, within the remaining iterations. They reach different local
@@ -472,5 +444,9 @@ Solver_report constrained_gauss_newton(const Solver_input& in, const Solver_sett
 } // namespace internal
 } // namespace Tilable_surfaces
 } // namespace CGAL
+
+#ifndef CGAL_TILABLE_SURFACES_COMPILED_LIBRARY
+#include <CGAL/Tilable_surfaces/internal/Optimization/constrained_gauss_newton_impl.h>
+#endif
 
 #endif // CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_CONSTRAINED_GAUSS_NEWTON_H

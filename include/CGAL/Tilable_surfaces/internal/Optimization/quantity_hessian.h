@@ -8,6 +8,7 @@
 // matrices over the item's 4 vertices (3 x 3 block (i, j) =
 // d^2 q / dx_i dx_j), for the exact Lagrangian Hessian of the default solver.
 
+#include <CGAL/Tilable_surfaces/internal/config.h>
 #include <CGAL/Tilable_surfaces/internal/Optimization/congruence_quantities.h>
 
 #include <Eigen/Core>
@@ -21,64 +22,25 @@ namespace internal {
 
 typedef Eigen::Matrix<double, 12, 12> Item_hessian;
 
-inline Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& a)
-{
-  Eigen::Matrix3d m;
-  m << 0, -a.z(), a.y(), a.z(), 0, -a.x(), -a.y(), a.x(), 0;
-  return m;
-}
+CGAL_TILABLE_SURFACES_INLINE
+Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& a);
 
 // V = u . (v x w) / 6 with u, v, w = x1 - x0, x2 - x0, x3 - x0 is linear in
 // each of u, v, w; the blocks of x0 follow from translation invariance.
-inline Item_hessian signed_volume_hessian(const std::array<int, 4>& item, const Point_matrix& X)
-{
-  std::array<Eigen::Vector3d, 3> e; // u, v, w
-  for(int i = 0; i < 3; ++i)
-    e[i] = (X.row(item[i + 1]) - X.row(item[0])).transpose();
-  Item_hessian H = Item_hessian::Zero();
-  // d/de_j of dV/de_i = e_j' x e_k' / 6 for the cyclic (i, j, k): -[e_k]_x / 6.
-  for(int i = 0; i < 3; ++i)
-  {
-    const int j = (i + 1) % 3, k = (i + 2) % 3;
-    H.block<3, 3>(3 * (i + 1), 3 * (j + 1)) = -cross_matrix(e[k]) / 6.0;
-    H.block<3, 3>(3 * (j + 1), 3 * (i + 1)) = cross_matrix(e[k]) / 6.0;
-  }
-  for(int i = 1; i < 4; ++i)
-  {
-    Eigen::Matrix3d row_sum = Eigen::Matrix3d::Zero();
-    for(int j = 1; j < 4; ++j)
-      row_sum += H.block<3, 3>(3 * i, 3 * j);
-    H.block<3, 3>(3 * i, 0) = -row_sum;
-    H.block<3, 3>(0, 3 * i) = -row_sum.transpose();
-  }
-  for(int j = 1; j < 4; ++j)
-    H.block<3, 3>(0, 0) -= H.block<3, 3>(0, 3 * j);
-  return H;
-}
+CGAL_TILABLE_SURFACES_INLINE
+Item_hessian signed_volume_hessian(const std::array<int, 4>& item, const Point_matrix& X);
 
 // w = V / S^(3/2) (scale_free_volume()), S the mean of the 6 squared pair
 // distances: the product rule on V and S^(-3/2).
-inline Item_hessian scale_free_volume_hessian(const std::array<int, 4>& item, const Point_matrix& X)
-{
-  const Quantity V = evaluate(SIGNED_VOLUME, item, X);
-  const Mean_squared_pair_distance mean(item, X);
-  const double S = mean.value;
-  const Eigen::Matrix<double, 12, 1>& gS = mean.gradient;
-  Eigen::Matrix<double, 12, 1> gV;
-  Item_hessian HS;
-  for(int i = 0; i < 4; ++i)
-  {
-    gV.segment<3>(3 * i) = V.gradient[i];
-    for(int j = 0; j < 4; ++j)
-      HS.block<3, 3>(3 * i, 3 * j) = ((i == j ? 4.0 : 0.0) - 1.0) / 3.0 * Eigen::Matrix3d::Identity();
-  }
-  const double p = std::pow(S, -1.5); // S^(-3/2)
-  return p * signed_volume_hessian(item, X) - 1.5 * p / S * (gV * gS.transpose() + gS * gV.transpose()) +
-         3.75 * V.value * p / (S * S) * gS * gS.transpose() - 1.5 * V.value * p / S * HS;
-}
+CGAL_TILABLE_SURFACES_INLINE
+Item_hessian scale_free_volume_hessian(const std::array<int, 4>& item, const Point_matrix& X);
 
 } // namespace internal
 } // namespace Tilable_surfaces
 } // namespace CGAL
+
+#ifndef CGAL_TILABLE_SURFACES_COMPILED_LIBRARY
+#include <CGAL/Tilable_surfaces/internal/Optimization/quantity_hessian_impl.h>
+#endif
 
 #endif // CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_QUANTITY_HESSIAN_H

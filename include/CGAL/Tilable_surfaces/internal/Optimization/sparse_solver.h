@@ -22,6 +22,7 @@
 // are reached through dlsym, so nothing is linked for them and the
 // process's own settings are restored once no factorization runs.
 
+#include <CGAL/Tilable_surfaces/internal/config.h>
 #include <Eigen/Sparse>
 #include <Eigen/SparseCholesky>
 
@@ -105,46 +106,17 @@ class SPD_solver
 #endif
 
 public:
-  SPD_solver()
-  {
-#ifdef CGAL_TILABLE_SURFACES_USE_CHOLMOD
-    // Quiet: a failed factorization is an expected answer of the inertia test.
-    m_factorization.cholmod().print = 0;
-#endif
-  }
+  SPD_solver();
 
   // Factorizes `A`; true iff `A` is numerically positive definite. The SQP
   // steps use this as their inertia test: the regularized KKT matrix has the
   // right inertia iff its primal form is positive definite.
-  bool factorize(const Matrix& A)
-  {
-#ifdef CGAL_TILABLE_SURFACES_USE_CHOLMOD
-    Serial_cholmod_scope serial;
-#endif
-    if(!has_analyzed_pattern_of(A))
-    {
-      m_factorization.analyzePattern(A);
-      m_outer.assign(A.outerIndexPtr(), A.outerIndexPtr() + A.outerSize() + 1);
-      m_inner.assign(A.innerIndexPtr(), A.innerIndexPtr() + A.nonZeros());
-    }
-    m_factorization.factorize(A);
-    m_positive_definite = m_factorization.info() == Eigen::Success;
-#ifndef CGAL_TILABLE_SURFACES_USE_CHOLMOD // Cholesky itself fails on an indefinite matrix
-    m_positive_definite = m_positive_definite && (m_factorization.vectorD().array() > 0).all();
-#endif
-    return m_positive_definite;
-  }
+  bool factorize(const Matrix& A);
 
   // The last factorization succeeded and may be solved with.
   bool positive_definite() const { return m_positive_definite; }
 
-  Eigen::VectorXd solve(const Eigen::VectorXd& b) const
-  {
-#ifdef CGAL_TILABLE_SURFACES_USE_CHOLMOD
-    Serial_cholmod_scope serial;
-#endif
-    return m_factorization.solve(b);
-  }
+  Eigen::VectorXd solve(const Eigen::VectorXd& b) const;
 
 private:
   bool has_analyzed_pattern_of(const Matrix& A) const
@@ -164,5 +136,9 @@ private:
 } // namespace internal
 } // namespace Tilable_surfaces
 } // namespace CGAL
+
+#ifndef CGAL_TILABLE_SURFACES_COMPILED_LIBRARY
+#include <CGAL/Tilable_surfaces/internal/Optimization/sparse_solver_impl.h>
+#endif
 
 #endif // CGAL_TILABLE_SURFACES_INTERNAL_OPTIMIZATION_SPARSE_SOLVER_H

@@ -22,6 +22,7 @@
 // candidate (the beam of merges alone costs O(K^2) a step); otherwise it
 // is a fallback the final result must beat.
 
+#include <CGAL/Tilable_surfaces/internal/config.h>
 #include <CGAL/Tilable_surfaces/cluster_panels.h>
 #include <CGAL/Tilable_surfaces/defaults.h>
 #include <CGAL/Tilable_surfaces/exceptions.h>
@@ -140,21 +141,8 @@ coarse_solution(Coarsening_levels<Point>& levels, const NP& np, Visitor& visitor
 // by face index until it has `k` clusters or none has two faces. Each half
 // keeps its orientations: both stay instances of the one S-quad, so an
 // exact clustering stays exact.
-inline void split_in_halves_to(Face_clustering& fc, std::size_t k)
-{
-  while(fc.number_of_clusters < k)
-  {
-    std::vector<std::vector<std::size_t> > members = cluster_members(fc.label, fc.number_of_clusters);
-    auto largest = std::max_element(members.begin(), members.end(), [](const auto& a, const auto& b) {
-      return a.size() < b.size();
-    });
-    if(largest->size() < 2)
-      return;
-    for(std::size_t i = largest->size() / 2; i < largest->size(); ++i)
-      fc.label[(*largest)[i]] = fc.number_of_clusters;
-    ++fc.number_of_clusters;
-  }
-}
+CGAL_TILABLE_SURFACES_INLINE
+void split_in_halves_to(Face_clustering& fc, std::size_t k);
 
 // Whether the multilevel start is tried on `pm` with the parameters `np`:
 // the default solver (the only one that starts from an exact start), no
@@ -233,5 +221,9 @@ Multilevel_start_hook multilevel_start_hook(State& state, const NP& np)
 } // namespace internal
 } // namespace Tilable_surfaces
 } // namespace CGAL
+
+#ifndef CGAL_TILABLE_SURFACES_COMPILED_LIBRARY
+#include <CGAL/Tilable_surfaces/internal/Search/multilevel_start_impl.h>
+#endif
 
 #endif // CGAL_TILABLE_SURFACES_INTERNAL_SEARCH_MULTILEVEL_START_H

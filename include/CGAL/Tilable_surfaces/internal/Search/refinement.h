@@ -11,6 +11,7 @@
 // (De Beers 28 -> 30: 1.35% against 1.62% of the diagonal with the
 // orientations kept).
 
+#include <CGAL/Tilable_surfaces/internal/config.h>
 #include <CGAL/Tilable_surfaces/optimize_tilable_surface.h>
 #include <CGAL/Tilable_surfaces/visitor.h>
 #include <CGAL/Tilable_surfaces/internal/Face_clustering.h>
@@ -63,17 +64,15 @@ typename Solver::Solution refined_solution(const Solver& solver, const Face_clus
 }
 
 // Why refine_to() chose its result, in words.
-inline std::string refinement_reason(std::size_t refined_k, std::size_t k, bool retagged_wins)
-{
-  return "the result at K = " + std::to_string(refined_k) + ", its largest clusters split to K = " +
-         std::to_string(k) + ", solved " +
-         (retagged_wins ? "from the input with the orientations the splits chose"
-                        : "from there with every face's orientation kept") +
-         " (refine_to())";
-}
+CGAL_TILABLE_SURFACES_INLINE
+std::string refinement_reason(std::size_t refined_k, std::size_t k, bool retagged_wins);
 
 } // namespace internal
 } // namespace Tilable_surfaces
 } // namespace CGAL
+
+#ifndef CGAL_TILABLE_SURFACES_COMPILED_LIBRARY
+#include <CGAL/Tilable_surfaces/internal/Search/refinement_impl.h>
+#endif
 
 #endif // CGAL_TILABLE_SURFACES_INTERNAL_SEARCH_REFINEMENT_H

@@ -9,6 +9,7 @@
 // from a better one of fewer clusters (k_set_tilable_curve() and the
 // deviation search), and the deviation search itself.
 
+#include <CGAL/Tilable_surfaces/internal/config.h>
 #include <CGAL/Tilable_surfaces/K_set_tilable_result.h>
 #include <CGAL/Tilable_surfaces/cluster_panels.h>
 #include <CGAL/Tilable_surfaces/exceptions.h>
@@ -70,20 +71,8 @@ void cluster_and_optimize(Surface& surface, const NamedParameters& np, Visitor& 
                                   result.optimization.measure_time);
 }
 
-inline Tile_count_trial tile_count_trial(const K_set_tilable_result& r, double seconds)
-{
-  const Tilability_measure& m = r.optimization.measure;
-  Tile_count_trial t;
-  t.number_of_tiles = m.number_of_clusters;
-  t.degree_of_flexibility = m.degree_of_flexibility;
-  t.congruence_error = m.congruence_error;
-  t.hausdorff_distance = m.hausdorff_distance;
-  t.max_displacement = m.max_displacement;
-  t.seconds = seconds;
-  t.is_tilable = r.is_tilable();
-  t.self_intersecting_face_pairs = m.self_intersecting_face_pairs;
-  return t;
-}
+CGAL_TILABLE_SURFACES_INLINE
+Tile_count_trial tile_count_trial(const K_set_tilable_result& r, double seconds);
 
 // The pipeline at K (`surface` holds the result), then, if `sources` has a
 // better result of fewer clusters, that result refined to K
@@ -190,5 +179,9 @@ K_set_tilable_result search_tile_count(PolygonMesh& pm, Surface& surface, Vertex
 
 } // namespace Tilable_surfaces
 } // namespace CGAL
+
+#ifndef CGAL_TILABLE_SURFACES_COMPILED_LIBRARY
+#include <CGAL/Tilable_surfaces/internal/Search/tile_count_search_impl.h>
+#endif
 
 #endif // CGAL_TILABLE_SURFACES_INTERNAL_SEARCH_TILE_COUNT_SEARCH_H

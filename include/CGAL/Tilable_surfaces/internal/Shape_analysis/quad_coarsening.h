@@ -28,6 +28,7 @@
 // congruent, and a clustering exact on the coarse mesh gives one exact on
 // the fine mesh with four clusters per coarse cluster.
 
+#include <CGAL/Tilable_surfaces/internal/config.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 #include <CGAL/Tilable_surfaces/internal/Face_clustering.h>
 #include <CGAL/Tilable_surfaces/internal/Shape_analysis/quad_layout.h>
@@ -358,26 +359,15 @@ std::vector<Point> prolongated_points(const Quad_coarsening& coarsening, const s
 // corner t, the midpoint towards corner t + 1, the centre and the midpoint
 // towards corner t - 1; its orientation starts at its C vertex and turns
 // the way the coarse orientation turns.
-inline Face_clustering prolongated_clustering(const Quad_coarsening& coarsening, const Face_clustering& coarse)
-{
-  const std::size_t n = coarsening.coarse_face.size();
-  Face_clustering fine;
-  fine.label.resize(n);
-  fine.orientation.resize(n);
-  fine.number_of_clusters = 4 * coarse.number_of_clusters;
-  for(std::size_t f = 0; f < n; ++f)
-  {
-    const std::size_t q = coarsening.coarse_face[f];
-    const Panel_orientation o = coarse.orientation[q];
-    const int t = o.inverse()(coarsening.coarse_corner[f]);
-    fine.label[f] = 4 * coarse.label[q] + std::size_t(t);
-    fine.orientation[f] = Panel_orientation(coarsening.own_corner[f] + (o.is_reversed() ? 4 : 0));
-  }
-  return fine;
-}
+CGAL_TILABLE_SURFACES_INLINE
+Face_clustering prolongated_clustering(const Quad_coarsening& coarsening, const Face_clustering& coarse);
 
 } // namespace internal
 } // namespace Tilable_surfaces
 } // namespace CGAL
+
+#ifndef CGAL_TILABLE_SURFACES_COMPILED_LIBRARY
+#include <CGAL/Tilable_surfaces/internal/Shape_analysis/quad_coarsening_impl.h>
+#endif
 
 #endif // CGAL_TILABLE_SURFACES_INTERNAL_SHAPE_ANALYSIS_QUAD_COARSENING_H

@@ -15,6 +15,7 @@
 // faces whose opposite is not a border); for the whole mesh, every edge that
 // is not a border (`Across_inner_edges`).
 
+#include <CGAL/Tilable_surfaces/internal/config.h>
 #include <CGAL/Tilable_surfaces/quad_shape.h>
 #include <CGAL/Tilable_surfaces/internal/Union_find.h>
 
@@ -32,18 +33,8 @@ namespace Tilable_surfaces {
 namespace internal {
 
 // Cluster ids renumbered by first face: cluster of face 0 is 0, and so on.
-inline std::size_t relabel_by_first_face(std::vector<std::size_t>& label)
-{
-  std::vector<std::size_t> id;
-  std::size_t next = 0;
-  for(std::size_t& l : label)
-  {
-    if(l >= id.size()) id.resize(l + 1, no_index());
-    if(id[l] == no_index()) id[l] = next++;
-    l = id[l];
-  }
-  return next;
-}
+CGAL_TILABLE_SURFACES_INLINE
+std::size_t relabel_by_first_face(std::vector<std::size_t>& label);
 
 // Every edge that is not a border joins its two faces.
 template <typename PolygonMesh>
@@ -331,5 +322,9 @@ Quad_grid quad_grid(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap vpm,
 } // namespace internal
 } // namespace Tilable_surfaces
 } // namespace CGAL
+
+#ifndef CGAL_TILABLE_SURFACES_COMPILED_LIBRARY
+#include <CGAL/Tilable_surfaces/internal/Shape_analysis/quad_grid_impl.h>
+#endif
 
 #endif // CGAL_TILABLE_SURFACES_INTERNAL_SHAPE_ANALYSIS_QUAD_GRID_H

@@ -24,6 +24,7 @@
 // (quad_grid.h), or is marked as none (a ring whose strips twist, a region
 // a trace enters without cutting it through).
 
+#include <CGAL/Tilable_surfaces/internal/config.h>
 #include <CGAL/Tilable_surfaces/internal/Shape_analysis/quad_grid.h>
 
 #include <map>
@@ -41,16 +42,8 @@ struct Quad_layout
 
 // The faces of every patch (patch_of_face: the patch of every face,
 // numbered from 0), increasing.
-inline std::vector<std::vector<std::size_t> > patch_faces(const std::vector<std::size_t>& patch_of_face)
-{
-  std::vector<std::vector<std::size_t> > faces;
-  for(std::size_t f = 0; f < patch_of_face.size(); ++f)
-  {
-    if(patch_of_face[f] >= faces.size()) faces.resize(patch_of_face[f] + 1);
-    faces[patch_of_face[f]].push_back(f);
-  }
-  return faces;
-}
+CGAL_TILABLE_SURFACES_INLINE
+std::vector<std::vector<std::size_t> > patch_faces(const std::vector<std::size_t>& patch_of_face);
 
 // Whether `v` is an irregular vertex of the quad mesh `pm`: valence other
 // than 4 inside, other than 3 on the border.
@@ -215,5 +208,9 @@ Quad_layout quad_layout(const PolygonMesh& pm, FaceIndexMap fim, VertexPointMap 
 } // namespace internal
 } // namespace Tilable_surfaces
 } // namespace CGAL
+
+#ifndef CGAL_TILABLE_SURFACES_COMPILED_LIBRARY
+#include <CGAL/Tilable_surfaces/internal/Shape_analysis/quad_layout_impl.h>
+#endif
 
 #endif // CGAL_TILABLE_SURFACES_INTERNAL_SHAPE_ANALYSIS_QUAD_LAYOUT_H

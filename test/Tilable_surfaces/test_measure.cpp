@@ -311,6 +311,18 @@ TEST(Measure, FlattenedPanelsAreCountedAndWarnedAbout)
 
   const Clustering own = single_cluster(lifted);
   EXPECT_EQ(TS::measure_tilability(lifted, lifted, clustering_parameters(own)).flattened_panels, 0u);
+
+  // A corner lifted by 0.03 (relative twist about 0.03, the mean edge within
+  // 1e-4 of 1) is below the input twist that counts, 0.05; one lifted by 0.06 is not.
+  for(const double lift : {0.03, 0.06})
+  {
+    Mesh slightly = flat;
+    for(auto v : vertices(slightly))
+      if(slightly.point(v) == Point(0, 1, 0))
+        slightly.point(v) = Point(0, 1, lift);
+    EXPECT_EQ(TS::measure_tilability(flat, slightly, clustering_parameters(c)).flattened_panels,
+              lift > 0.05 ? 1u : 0u) << "corner lifted by " << lift;
+  }
 }
 
 // Three unit squares in a row, each its own cluster: K = 3 and one distinct

@@ -298,10 +298,15 @@ TEST(Measure, CongruentSQuadsAreOneMold)
 TEST(Measure, FlattenedPanelsAreCountedAndWarnedAbout)
 {
   Mesh flat = two_squares();
-  Mesh lifted = flat;
-  for(auto v : vertices(lifted))
-    if(lifted.point(v) == Point(0, 1, 0))
-      lifted.point(v) = Point(0, 1, 0.2);
+  // The two squares with the corner (0, 1, 0) lifted by `lift`.
+  const auto lifted_by = [&flat](double lift) {
+    Mesh m = flat;
+    for(auto v : vertices(m))
+      if(m.point(v) == Point(0, 1, 0))
+        m.point(v) = Point(0, 1, lift);
+    return m;
+  };
+  Mesh lifted = lifted_by(0.2);
   const Clustering c = single_cluster(flat);
   const TS::Tilability_measure m = TS::measure_tilability(flat, lifted, clustering_parameters(c));
   EXPECT_EQ(m.flattened_panels, 1u);
@@ -315,14 +320,8 @@ TEST(Measure, FlattenedPanelsAreCountedAndWarnedAbout)
   // A corner lifted by 0.03 (relative twist about 0.03, the mean edge within
   // 1e-4 of 1) is below the input twist that counts, 0.05; one lifted by 0.06 is not.
   for(const double lift : {0.03, 0.06})
-  {
-    Mesh slightly = flat;
-    for(auto v : vertices(slightly))
-      if(slightly.point(v) == Point(0, 1, 0))
-        slightly.point(v) = Point(0, 1, lift);
-    EXPECT_EQ(TS::measure_tilability(flat, slightly, clustering_parameters(c)).flattened_panels,
+    EXPECT_EQ(TS::measure_tilability(flat, lifted_by(lift), clustering_parameters(c)).flattened_panels,
               lift > 0.05 ? 1u : 0u) << "corner lifted by " << lift;
-  }
 }
 
 // Three unit squares in a row, each its own cluster: K = 3 and one distinct

@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
 # Builds with AddressSanitizer (with LeakSanitizer) and UndefinedBehaviorSanitizer
 # (-O1 -g1, assertions on) in build-sanitize/ and runs the ctest suite there.
-#   bash scripts/sanitize.sh [--quick] [ctest arguments]
-#   --quick   builds the target sanitize_quick and runs only the tests labelled
-#             `sanitize_quick`: those of test_tilable_surfaces_input (reading,
-#             validation, bad input, fuzz regressions, every kind of mesh,
-#             sweeps, the distance oracle); what .ci/run does.
-#             Without it: everything, the whole suite.
+#   bash scripts/sanitize.sh [--quick | --fast] [ctest arguments]
+#   --quick   builds the target sanitize_quick and runs the tests labelled
+#             `sanitize_quick` but not `slow`: those of test_tilable_surfaces_input
+#             (reading, validation, bad input, fuzz regressions, every kind of
+#             mesh, sweeps, the distance oracle) but the large pipelines, which
+#             the Release suite runs; what .ci/run does.
+#   --fast    builds the testsuite and runs the tests labelled `fast` (the
+#             input-handling tests among them): every part of the package.
+#             Without either: everything, the whole suite.
 # SANITIZE_JOBS=N sets the build and ctest job count (default: the number of cores).
 #
 # Any report is fatal: UBSan is compiled with -fno-sanitize-recover=all (the first
@@ -20,8 +23,11 @@
 # and compiles a fifth faster than -g.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-quick=false
-if [ "${1:-}" = "--quick" ]; then quick=true; shift; fi
+mode=all
+case "${1:-}" in
+  --quick) mode=quick; shift ;;
+  --fast) mode=fast; shift ;;
+esac
 bash scripts/setup.sh --packages-only g++ cmake make libcgal-dev libeigen3-dev libboost-dev \
   libboost-program-options-dev libgtest-dev nlohmann-json3-dev
 sanitizers="address,undefined,float-cast-overflow"
@@ -44,9 +50,11 @@ cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Sanitize \
   > build-sanitize-configure.log 2>&1 \
   || { cat build-sanitize-configure.log; exit 1; }
 jobs=${SANITIZE_JOBS:-$(nproc 2>/dev/null || echo 2)}
-build_targets=(--target all)
-ctest_selection=()
-if $quick; then build_targets=(--target sanitize_quick); ctest_selection=(-L sanitize_quick); fi
+case $mode in
+  quick) build_targets=(--target sanitize_quick); ctest_selection=(-L sanitize_quick -LE slow) ;;
+  fast) build_targets=(--target tilable_surfaces_testsuite); ctest_selection=(-L fast) ;;
+  *) build_targets=(--target all); ctest_selection=() ;;
+esac
 TIMEFORMAT="sanitize: build %0R s (cpu: %0U s user, %0S s system)"
 time nice -n 15 cmake --build build-sanitize -j "$jobs" "${build_targets[@]}"
 cd build-sanitize

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # The HTML report in a real browser (Debian's chromium, headless, driven by
-# puppeteer-core from npm): the seashell's 60-set tilable result's page lists
-# its 60 tiles, draws the 3D view (the canvas has pixels other than the
+# puppeteer-core from npm): the page of INPUT's K-set tilable result lists
+# its K tiles, draws the 3D view (the canvas has pixels other than the
 # background), and a click on a panel selects it (the panel's tile is told and
 # its mold sheet marked). Exit 77 (skipped, ctest SKIP_RETURN_CODE) when
 # chromium, npm or this build's three.js is missing.

@@ -328,6 +328,9 @@ TEST(ClusterQuads, KEqualsNumberOfFaces)
 // paper's for the record, not asserted (the meshes are stand-ins).
 struct Paper_case { const char* surface; std::vector<std::size_t> ks; };
 
+// The names of the cases, so that a test keeps its name from one run to the next.
+void PrintTo(const Paper_case& p, std::ostream* os) { *os << p.surface; }
+
 class PaperSurfaces : public ::testing::TestWithParam<Paper_case> {};
 
 TEST_P(PaperSurfaces, ExactlyKClustersWithAdmissibleOrientations)

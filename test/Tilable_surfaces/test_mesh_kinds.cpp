@@ -1,8 +1,6 @@
-// End to end on every kind of mesh: a closed surface, CGAL::Polyhedron_3, a
-// Surface_mesh with removed elements not yet collected, and a kernel with
-// exact predicates. Each result is checked for congruence independently.
-#include <CGAL/Exact_predicates_exact_constructions_kernel.h>
-#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+// End to end on every kind of mesh: a closed surface, CGAL::Polyhedron_3 and a
+// Surface_mesh with removed elements not yet collected (other kernels:
+// test_kernels.cpp). Each result is checked for congruence independently.
 #include <CGAL/Polyhedron_3.h>
 #include <CGAL/Polyhedron_items_with_id_3.h>
 #include <CGAL/Simple_cartesian.h>
@@ -12,7 +10,7 @@
 
 #include <CGAL/Tilable_surfaces/make_k_set_tilable.h>
 
-#include "congruence_check.h"
+#include "any_mesh_check.h"
 
 #include <gtest/gtest.h>
 
@@ -28,36 +26,10 @@ namespace test_mesh_kinds_unit {
 
 namespace TS = CGAL::Tilable_surfaces;
 namespace TSP = CGAL::Tilable_surfaces::parameters;
+using any_mesh_check::read;
+using any_mesh_check::tile_and_check;
 
 namespace {
-
-template <typename Mesh>
-Mesh read(const std::string& name)
-{
-  Mesh mesh;
-  EXPECT_TRUE(CGAL::IO::read_polygon_mesh(std::string(CGAL_TILABLE_SURFACES_TEST_DATA) + "/" + name, mesh));
-  return mesh;
-}
-
-// Runs make_k_set_tilable() with K = k, maps keyed by face descriptor (so any
-// mesh type will do), and checks the result by an independent fit: tilable,
-// congruent, K clusters, every face labelled.
-template <typename Mesh>
-TS::K_set_tilable_result tile_and_check(Mesh& mesh, int k)
-{
-  typedef typename boost::graph_traits<Mesh>::face_descriptor Face;
-  std::map<Face, int> cluster, orientation;
-  const TS::K_set_tilable_result r = TS::make_k_set_tilable(
-    mesh, TSP::number_of_tiles(k)
-            .face_cluster_map(boost::make_assoc_property_map(cluster))
-            .face_orientation_map(boost::make_assoc_property_map(orientation)));
-  EXPECT_TRUE(r.is_tilable()) << r.optimization.measure.congruence_error;
-  EXPECT_EQ(cluster.size(), num_faces(mesh));
-  EXPECT_EQ(r.tiles.size(), std::size_t(k));
-  EXPECT_LE(congruence_by_umeyama(mesh, boost::make_assoc_property_map(cluster),
-                                  boost::make_assoc_property_map(orientation)), 2e-6);
-  return r;
-}
 
 template <typename Mesh>
 double max_coordinate_change(const Mesh& before, const Mesh& after)
@@ -108,38 +80,6 @@ TEST(MeshKinds, Polyhedron3WithIds)
   const Polyhedron input = mesh;
   tile_and_check(mesh, 30);
   EXPECT_GT(max_coordinate_change(input, mesh), 1e-6);
-}
-
-// The monkey saddle at K = 30 with the points of `Kernel`: tilable, and the
-// same numbers as with Simple_cartesian<double>, since the package computes in
-// doubles whatever the kernel (it reads coordinates with to_double() and
-// builds the moved points from doubles).
-template <typename Kernel>
-void check_same_as_on_doubles()
-{
-  typedef CGAL::Surface_mesh<typename Kernel::Point_3> Mesh;
-  typedef CGAL::Surface_mesh<CGAL::Simple_cartesian<double>::Point_3> Plain;
-  Mesh mesh = read<Mesh>("monkey_saddle.off");
-  Plain plain = read<Plain>("monkey_saddle.off");
-  const TS::K_set_tilable_result r = tile_and_check(mesh, 30), p = tile_and_check(plain, 30);
-  EXPECT_EQ(r.optimization.measure.congruence_error, p.optimization.measure.congruence_error);
-  auto v = vertices(plain).begin();
-  for(auto w : vertices(mesh))
-  {
-    EXPECT_EQ(CGAL::to_double(mesh.point(w).x()), plain.point(*v).x());
-    ++v;
-  }
-}
-
-TEST(MeshKinds, ExactPredicatesInexactConstructionsKernel)
-{
-  check_same_as_on_doubles<CGAL::Exact_predicates_inexact_constructions_kernel>();
-}
-
-// Exact constructions work too (no static_assert is needed).
-TEST(MeshKinds, ExactPredicatesExactConstructionsKernel)
-{
-  check_same_as_on_doubles<CGAL::Exact_predicates_exact_constructions_kernel>();
 }
 
 TEST(MeshKinds, SurfaceMeshWithRemovedElementsIsRefusedUntilCollected)

@@ -87,4 +87,8 @@ std::vector<Tile_count_trial> k_set_tilable_curve(PolygonMesh& pm,
 } // namespace Tilable_surfaces
 } // namespace CGAL
 
+#ifdef CGAL_TILABLE_SURFACES_COMPILED_LIBRARY
+#include <CGAL/Tilable_surfaces/internal/Search/compiled_pipeline.h>
+#endif
+
 #endif // CGAL_TILABLE_SURFACES_K_SET_TILABLE_CURVE_H

@@ -112,4 +112,8 @@ K_set_tilable_result make_k_set_tilable(PolygonMesh& pm, const CGAL_NP_CLASS& np
 } // namespace Tilable_surfaces
 } // namespace CGAL
 
+#ifdef CGAL_TILABLE_SURFACES_COMPILED_LIBRARY
+#include <CGAL/Tilable_surfaces/internal/Search/compiled_pipeline.h>
+#endif
+
 #endif // CGAL_TILABLE_SURFACES_MAKE_K_SET_TILABLE_H

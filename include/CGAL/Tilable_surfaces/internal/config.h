@@ -16,7 +16,8 @@
 // sparse solvers) used by an inline function in every unit that sees its
 // body, called or not: this saves tens of seconds of compilation per unit.
 // This project's own programs and tests are built that way (CMake target
-// Tilable_surfaces_compiled, not installed).
+// Tilable_surfaces_compiled, not installed), which also holds the pipeline
+// on a Surface_mesh instantiated once (internal/Search/compiled_pipeline.h).
 
 #ifdef CGAL_TILABLE_SURFACES_COMPILED_LIBRARY
 #  define CGAL_TILABLE_SURFACES_INLINE

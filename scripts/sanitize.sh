@@ -28,7 +28,7 @@ case "${1:-}" in
   --quick) mode=quick; shift ;;
   --fast) mode=fast; shift ;;
 esac
-bash scripts/setup.sh --packages-only g++ cmake make libcgal-dev libeigen3-dev libboost-dev \
+bash scripts/setup.sh --packages-only g++ cmake make ninja-build libcgal-dev libeigen3-dev libboost-dev \
   libboost-program-options-dev libgtest-dev nlohmann-json3-dev
 sanitizers="address,undefined,float-cast-overflow"
 flags="-O1 -g1 -fsanitize=$sanitizers -fno-sanitize-recover=all -fno-omit-frame-pointer"
@@ -39,7 +39,9 @@ asan_options="halt_on_error=1:abort_on_error=1:detect_leaks=1:check_initializati
 # leaks are not looked for there (CPython keeps its objects to the end by design).
 preload="$(g++ -print-file-name=libasan.so) $(g++ -print-file-name=libstdc++.so)"
 python_environment="LD_PRELOAD=$preload;ASAN_OPTIONS=${asan_options/detect_leaks=1/detect_leaks=0}"
-cmake -S . -B build-sanitize -DCMAKE_BUILD_TYPE=Sanitize \
+generator=()  # Ninja for a new build directory, as setup.sh
+[ ! -f build-sanitize/CMakeCache.txt ] && command -v ninja > /dev/null && generator=(-G Ninja)
+cmake -S . -B build-sanitize "${generator[@]}" -DCMAKE_BUILD_TYPE=Sanitize \
   -DCMAKE_CXX_FLAGS_SANITIZE="$flags" \
   -DCMAKE_EXE_LINKER_FLAGS_SANITIZE="-fsanitize=$sanitizers" \
   -DCMAKE_MODULE_LINKER_FLAGS_SANITIZE="-fsanitize=$sanitizers" \

@@ -14,7 +14,7 @@ cd "$(dirname "$0")/.."
 
 # The command-line program's packages; the optional ones are used when present:
 # parallel loops (TBB), the CHOLMOD sparse solver (1.5x faster on OpenBLAS), ccache.
-cli_packages=(g++ cmake make libcgal-dev libeigen3-dev libboost-dev libboost-program-options-dev
+cli_packages=(g++ cmake make ninja-build libcgal-dev libeigen3-dev libboost-dev libboost-program-options-dev
               nlohmann-json3-dev libtbb-dev libsuitesparse-dev libopenblas0-pthread ccache)
 # On top, for the testsuite and the Python module tilable_surfaces (build/python/);
 # chromium for the test of the HTML report in a browser (label browser).
@@ -43,14 +43,18 @@ fi
 
 [ "$mode" = packages ] && exit 0
 jobs=$(nproc 2>/dev/null || echo 2)
+# A new build directory is generated for Ninja when present (it keeps both
+# cores busier than make does); one configured earlier keeps its generator.
+generator=()
+[ ! -f build/CMakeCache.txt ] && command -v ninja > /dev/null && generator=(-G Ninja)
 if [ "$mode" = cli ]; then
   # A build configured earlier for everything keeps its settings.
   configure=(); [ -f build/CMakeCache.txt ] || configure=(-DBUILD_TESTING=OFF)
-  cmake -S . -B build -DCMAKE_BUILD_TYPE=Release "${configure[@]}" > build-configure.log 2>&1 \
+  cmake -S . -B build "${generator[@]}" -DCMAKE_BUILD_TYPE=Release "${configure[@]}" > build-configure.log 2>&1 \
     || { cat build-configure.log; exit 1; }
   cmake --build build -j "$jobs" --target k_set_tilable
   exit 0
 fi
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON > build-configure.log 2>&1 \
+cmake -S . -B build "${generator[@]}" -DCMAKE_BUILD_TYPE=Release -DBUILD_TESTING=ON > build-configure.log 2>&1 \
   || { cat build-configure.log; exit 1; }
 cmake --build build -j "$jobs" "$@"

@@ -43,8 +43,9 @@ fi
 
 [ "$mode" = packages ] && exit 0
 jobs=$(nproc 2>/dev/null || echo 2)
-# A new build directory is generated for Ninja when present (it keeps both
-# cores busier than make does); one configured earlier keeps its generator.
+# A new build directory is generated for Ninja when present (its log,
+# .ninja_log, gives each unit's compile time); one configured earlier keeps
+# its generator.
 generator=()
 [ ! -f build/CMakeCache.txt ] && command -v ninja > /dev/null && generator=(-G Ninja)
 if [ "$mode" = cli ]; then
